@@ -1,0 +1,27 @@
+# darkroom_add_gtest(NAME SOURCES src... [LIBRARIES lib...] [DEPENDS target...])
+#
+# One GoogleTest executable registered with ctest. Tests find the build's
+# plugins, the source tree and ../shared/data through compile definitions.
+include(GoogleTest)
+find_package(GTest REQUIRED)
+
+function(darkroom_add_gtest NAME)
+  if(NOT DARKROOM_BUILD_TESTS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES;DEPENDS" ${ARGN})
+  add_executable(${NAME} ${ARG_SOURCES})
+  target_link_libraries(${NAME} PRIVATE darkroom_framework darkroom_testsupport GTest::gtest_main GTest::gmock ${ARG_LIBRARIES})
+  target_compile_definitions(${NAME} PRIVATE
+    DARKROOM_TEST_PLUGIN_DIR="${DARKROOM_PLUGIN_OUTPUT_DIRECTORY}"
+    DARKROOM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    DARKROOM_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    DARKROOM_SHARED_DATA_DIR="${PROJECT_SOURCE_DIR}/../shared/data")
+  set_target_properties(${NAME} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/tests)
+  if(ARG_DEPENDS)
+    add_dependencies(${NAME} ${ARG_DEPENDS})
+  endif()
+  gtest_discover_tests(${NAME} DISCOVERY_MODE PRE_TEST
+    WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests
+    PROPERTIES ENVIRONMENT "DARKROOM_PLUGIN_PATH=")
+endfunction()

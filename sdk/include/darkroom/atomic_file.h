@@ -1,0 +1,20 @@
+#pragma once
+#include <darkroom/export.h>
+
+#include <string>
+#include <string_view>
+
+namespace darkroom {
+
+// Writing a file so that readers see the old file or the complete new one,
+// never a torn one: write to temporaryPathFor(path), then commitFile().
+//
+// A unique name in the same directory (so the rename cannot cross file
+// systems), keeping the extension so format-sniffing writers (OIIO) still work.
+DARKROOM_API std::string temporaryPathFor(const std::string& path);
+// fsyncs the temporary file and renames it over `path`; throws darkroom::Error.
+DARKROOM_API void commitFile(const std::string& temporary, const std::string& path);
+// Convenience: writes bytes atomically; throws darkroom::Error naming the path.
+DARKROOM_API void writeFileAtomic(const std::string& path, std::string_view bytes);
+
+}  // namespace darkroom

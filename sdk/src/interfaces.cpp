@@ -1,0 +1,24 @@
+// Key functions of the SDK's abstract interfaces, so their vtables and
+// type_info are emitted once, in the SDK library.
+#include <darkroom/capture_backend.h>
+#include <darkroom/context.h>
+#include <darkroom/error.h>
+#include <darkroom/filter.h>
+#include <darkroom/registrar.h>
+
+namespace darkroom {
+
+Filter::~Filter() = default;
+CaptureBackend::~CaptureBackend() = default;
+Registrar::~Registrar() = default;
+Context::~Context() = default;
+
+BufferPtr Context::requireImage(std::string_view port) const {
+    BufferPtr b = image(port);
+    if (!b)
+        throw Error("node '" + nodeName() + "': input '" + std::string(port) +
+                    "' is not connected");
+    return b;
+}
+
+}  // namespace darkroom

@@ -1,0 +1,66 @@
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace darkroom::test {
+
+Registry& pluginRegistry() {
+    static Registry* registry = [] {
+        auto* r = new Registry();
+        const Diagnostics d = r->loadPlugins({DARKROOM_TEST_PLUGIN_DIR});
+        for (const auto& x : d) ADD_FAILURE() << x.str();
+        return r;
+    }();
+    return *registry;
+}
+
+std::string sharedData(const std::string& relative) {
+    const fs::path p = fs::path(DARKROOM_SHARED_DATA_DIR) / relative;
+    return fs::exists(p) ? p.string() : std::string();
+}
+
+TempDir::TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "darkroom-test-XXXXXX").string();
+    if (!::mkdtemp(tmpl.data())) throw Error("cannot create a temporary directory");
+    path_ = tmpl;
+}
+
+TempDir::~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+}
+
+std::shared_ptr<WritableBuffer> makeImage(int w, int h, const std::vector<std::string>& channels,
+                                          const std::function<float(int, int, int)>& fn) {
+    std::vector<ChannelDesc> desc;
+    for (const auto& c : channels) desc.push_back({c, ChannelType::Float32});
+    auto b = makeCpuBuffer(w, h, desc);
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        float* p = b->hostFloat(channels[c]);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) p[std::size_t(y) * w + x] = fn(x, y, int(c));
+    }
+    return b;
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+}  // namespace darkroom::test
