@@ -11,6 +11,8 @@
 
 namespace darkroom {
 
+class CaptureBackend;
+
 // What a filter sees while it executes: its inputs, a way to allocate and
 // publish outputs, progress, cancellation and parallel loops. Implemented by
 // the host; a filter never constructs one.
@@ -47,6 +49,10 @@ public:
                                                      std::vector<ChannelDesc> channels) = 0;
     virtual void setOutput(std::string_view port, Value value) = 0;
     void setOutput(std::string_view port, BufferPtr buffer) { setOutput(port, Value(std::move(buffer))); }
+
+    // A capture backend registered under `type` (e.g. "embree"), for nodes that
+    // render; throws darkroom::Error listing the registered backends if unknown.
+    virtual std::unique_ptr<CaptureBackend> createBackend(std::string_view type) const = 0;
 
     // --- progress, cancellation, diagnostics ---
     virtual void progress(double fraction) = 0;  // 0..1 within this node

@@ -3,6 +3,7 @@
 #include <darkroom/filter.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,11 +17,21 @@ struct FilterRunResult {
     std::vector<std::string> warnings;
 };
 
+class Registry;
+
 struct FilterRunOptions {
     int threads = 0;  // 0 = all hardware threads
     std::string inputBase;
     std::string outputDir;
+    const Registry* registry = nullptr;  // for Context::createBackend
 };
+
+// A context with no inputs, for driving a CaptureBackend (or a filter by hand)
+// outside a graph. Outputs set on it are kept in `outputs`; parallelFor runs
+// in an arena of options.threads threads.
+class Context;
+DARKROOM_API std::unique_ptr<Context> makeStandaloneContext(const FilterRunOptions& options,
+                                                            std::string nodeName = "standalone");
 
 DARKROOM_API FilterRunResult runFilter(Filter& filter,
                                        const std::map<std::string, std::vector<Value>>& inputs,
