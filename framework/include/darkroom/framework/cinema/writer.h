@@ -1,0 +1,96 @@
+#pragma once
+// Writing a Cinema Spec D database: `name.cdb/data.csv` with the sampling
+// parameters as columns followed by FILE, and one multi-channel OpenEXR per
+// entry (every channel of the buffer, camera in the header).
+//
+// Safety: every product and every version of data.csv is written atomically
+// (temporary file, fsync, rename), a product before the row that names it, so
+// a process killed at any moment leaves a valid database. Rows are kept sorted
+// by their parameter values, so the final data.csv does not depend on the
+// order entries were added in or on how often the capture was interrupted.
+#include <darkroom/buffer.h>
+#include <darkroom/export.h>
+#include <darkroom/framework/image_io.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace darkroom {
+
+// A data.csv cell the writer is given: a number (the usual case) or text.
+class DARKROOM_API CinemaValue {
+public:
+    CinemaValue(double v) : number_(v), isNumber_(true) {}
+    CinemaValue(int v) : number_(v), isNumber_(true) {}
+    CinemaValue(std::string text) : text_(std::move(text)) {}
+    CinemaValue(const char* text) : text_(text) {}
+
+    bool isNumber() const { return isNumber_; }
+    double number() const { return number_; }
+    const std::string& text() const { return text_; }
+    // As written in data.csv and file names: shortest round-trip number or the text.
+    std::string str() const;
+
+private:
+    double number_ = 0;
+    std::string text_;
+    bool isNumber_ = false;
+};
+
+// Column name -> value; must name exactly the writer's columns.
+using CinemaParameters = std::map<std::string, CinemaValue>;
+
+struct CinemaWriterOptions {
+    // Delete an existing database (it must look like one: have a data.csv)
+    // and start afresh.
+    bool overwrite = false;
+    // Keep the entries of an existing database whose products exist, drop
+    // the rest and the leftovers of an interrupted write; addEntry then
+    // completes it. Its columns must match.
+    bool resume = false;
+    ImageWriteOptions image;  // compression etc. of the products
+};
+
+class DARKROOM_API CinemaWriter {
+public:
+    // Creates (or, with overwrite/resume, reopens) the database folder and
+    // locks it (flock on `<path>/.lock`, held until finish() or destruction).
+    // Throws darkroom::Error when the folder exists and is not empty without
+    // overwrite/resume ("use --overwrite or --resume"), when another process
+    // holds the lock ("being written by another process (pid N)"), or when
+    // the column names are unusable.
+    CinemaWriter(std::string path, std::vector<std::string> columnNames,
+                 CinemaWriterOptions options = {});
+    ~CinemaWriter();
+    CinemaWriter(const CinemaWriter&) = delete;
+    CinemaWriter& operator=(const CinemaWriter&) = delete;
+
+    const std::string& path() const;
+    const std::vector<std::string>& columns() const;
+
+    // True when the entry is already in the database (kept by a resume or
+    // added earlier); a resumed capture skips it.
+    bool hasEntry(const CinemaParameters& parameters) const;
+    // Writes the product (replacing an earlier one with the same parameters)
+    // and then data.csv. Thread-safe. Throws darkroom::Error naming the
+    // parameters when they do not match the columns.
+    void addEntry(const CinemaParameters& parameters, const Buffer& image);
+
+    // Entries in the database now, and how many of them a resume kept.
+    std::size_t entryCount() const;
+    std::size_t resumedCount() const;
+    // Product file name of an entry, relative to the folder ("phi=30_theta=45.exr").
+    std::string entryFileName(const CinemaParameters& parameters) const;
+
+    // Writes data.csv a last time and releases and removes the lock file.
+    // Further addEntry calls throw.
+    void finish();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace darkroom

@@ -1,0 +1,202 @@
+// The tolerant data.csv reader. Irregularities are collected per kind so a
+// file with a thousand short rows yields one warning, not a thousand.
+#include <darkroom/error.h>
+#include <darkroom/framework/cinema/csv.h>
+
+#include <fmt/format.h>
+
+#include <array>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace darkroom {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+
+enum class Irregularity {
+    ShortRow,
+    LongRow,
+    UnterminatedQuote,
+    TextAfterQuote,
+    EmptyColumnName,
+    DuplicateColumnName,
+};
+
+const char* describe(Irregularity k) {
+    switch (k) {
+        case Irregularity::ShortRow: return "row has fewer cells than the header; padded with empty cells";
+        case Irregularity::LongRow: return "row has more cells than the header; extra cells ignored";
+        case Irregularity::UnterminatedQuote: return "quoted cell is not closed before the end of the line";
+        case Irregularity::TextAfterQuote: return "text after the closing quote of a cell; kept as part of the cell";
+        case Irregularity::EmptyColumnName: return "empty column name in the header";
+        case Irregularity::DuplicateColumnName: return "duplicate column name in the header; lookups by name use the first";
+    }
+    return "irregular row";
+}
+
+// Records the first line and the count of every kind; throws at once when strict.
+class IrregularityLog {
+public:
+    IrregularityLog(const std::string& source, bool strict) : source_(source), strict_(strict) {}
+
+    void add(Irregularity kind, int line, const std::string& detail) {
+        if (strict_)
+            throw Error(fmt::format("{}:{}: {} ({}); expected a regular CSV row (strict mode)",
+                                    source_, line, describe(kind), detail));
+        auto [it, inserted] = seen_.try_emplace(kind, Entry{line, 0, detail});
+        ++it->second.count;
+    }
+
+    Diagnostics diagnostics() const {
+        Diagnostics out;
+        for (const auto& [kind, e] : seen_) {
+            std::string msg = fmt::format("{} ({})", describe(kind), e.detail);
+            if (e.count > 1) msg += fmt::format("; {} occurrences in all", e.count);
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.where = fmt::format("{}:{}", source_, e.line);
+            d.message = std::move(msg);
+            out.push_back(std::move(d));
+        }
+        return out;
+    }
+
+private:
+    struct Entry {
+        int line;
+        int count;
+        std::string detail;
+    };
+    const std::string& source_;
+    bool strict_;
+    std::map<Irregularity, Entry> seen_;
+};
+
+// Splits one physical line into cells. Quoted cells may contain commas and
+// doubled quotes; they may not span lines (no Cinema writer produces that,
+// and a stray quote would otherwise swallow the rest of the file).
+std::vector<std::string> splitLine(std::string_view line, int lineNo, IrregularityLog& log) {
+    std::vector<std::string> cells;
+    std::size_t i = 0;
+    for (;;) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+        std::string cell;
+        if (i < line.size() && line[i] == '"') {
+            ++i;
+            bool closed = false;
+            while (i < line.size()) {
+                if (line[i] == '"') {
+                    if (i + 1 < line.size() && line[i + 1] == '"') {
+                        cell += '"';
+                        i += 2;
+                        continue;
+                    }
+                    closed = true;
+                    ++i;
+                    break;
+                }
+                cell += line[i++];
+            }
+            if (!closed)
+                log.add(Irregularity::UnterminatedQuote, lineNo,
+                        fmt::format("cell {}", cells.size() + 1));
+            const std::size_t end = line.find(',', i);
+            const std::string_view rest =
+                trim(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i));
+            if (!rest.empty()) {
+                log.add(Irregularity::TextAfterQuote, lineNo,
+                        fmt::format("cell {}: '{}'", cells.size() + 1, rest));
+                cell += rest;
+            }
+            cells.push_back(std::move(cell));
+            if (end == std::string_view::npos) break;
+            i = end + 1;
+        } else {
+            const std::size_t end = line.find(',', i);
+            cells.emplace_back(
+                trim(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i)));
+            if (end == std::string_view::npos) break;
+            i = end + 1;
+        }
+    }
+    return cells;
+}
+
+}  // namespace
+
+bool isCinemaFileColumn(std::string_view name) {
+    if (name.substr(0, 4) != "FILE") return false;
+    if (name.size() == 4) return true;
+    const char c = name[4];
+    return c == '_' || (c >= '0' && c <= '9');
+}
+
+CsvTable parseCsv(std::string_view text, const std::string& source, const CsvReadOptions& options) {
+    CsvTable table;
+    table.source = source;
+    IrregularityLog log(table.source, options.strict);
+
+    // A UTF-8 byte order mark (spreadsheet exports) is not part of the first name.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+
+    bool haveHeader = false;
+    int lineNo = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++lineNo;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF
+        if (trim(line).empty()) continue;  // blank lines (often the last) carry nothing
+
+        std::vector<std::string> cells = splitLine(line, lineNo, log);
+        if (!haveHeader) {
+            haveHeader = true;
+            std::set<std::string> names;
+            for (std::size_t c = 0; c < cells.size(); ++c) {
+                if (cells[c].empty())
+                    log.add(Irregularity::EmptyColumnName, lineNo, fmt::format("column {}", c + 1));
+                else if (!names.insert(cells[c]).second)
+                    log.add(Irregularity::DuplicateColumnName, lineNo,
+                            fmt::format("'{}' in column {}", cells[c], c + 1));
+            }
+            table.header = std::move(cells);
+            continue;
+        }
+        const std::size_t n = table.header.size();
+        if (cells.size() < n)
+            log.add(Irregularity::ShortRow, lineNo, fmt::format("{} of {} cells", cells.size(), n));
+        else if (cells.size() > n)
+            log.add(Irregularity::LongRow, lineNo, fmt::format("{} of {} cells", cells.size(), n));
+        cells.resize(n);
+        table.rows.push_back(std::move(cells));
+        table.rowLines.push_back(lineNo);
+    }
+    if (!haveHeader)
+        throw Error(fmt::format("{}:1: the file is empty; expected a header row naming the columns "
+                                "(e.g. 'phi,theta,FILE')",
+                                source));
+    table.warnings = log.diagnostics();
+    return table;
+}
+
+CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(fmt::format("cannot read '{}': no such file or not readable", path));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw Error(fmt::format("cannot read '{}': read error", path));
+    return parseCsv(ss.str(), path, options);
+}
+
+}  // namespace darkroom

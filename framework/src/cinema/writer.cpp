@@ -1,0 +1,321 @@
+// The Cinema Spec D writer: products first, then an atomically replaced
+// data.csv, all under a folder lock. See writer.h for the guarantees.
+#include "database_lock.h"
+
+#include <darkroom/atomic_file.h>
+#include <darkroom/error.h>
+#include <darkroom/framework/cinema/csv.h>
+#include <darkroom/framework/cinema/naming.h>
+#include <darkroom/framework/cinema/writer.h>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+namespace darkroom {
+
+namespace fs = std::filesystem;
+using cinema_detail::DatabaseLock;
+
+namespace {
+
+constexpr const char* kProductExtension = ".exr";
+
+// Rows sort by their values, column by column: numbers (ascending, NaN last)
+// before text. Derived from the cell text alone, so an entry sorts the same
+// whether it was just added or read back by a resume.
+struct SortCell {
+    bool isNumber;
+    double number;
+    std::string text;
+};
+
+SortCell sortCell(const std::string& text) {
+    double v;
+    if (parseCsvNumber(text, v)) return {true, v, text};
+    return {false, 0, text};
+}
+
+bool cellLess(const SortCell& a, const SortCell& b) {
+    if (a.isNumber != b.isNumber) return a.isNumber;
+    if (!a.isNumber) return a.text < b.text;
+    const bool an = std::isnan(a.number), bn = std::isnan(b.number);
+    if (an || bn) return !an && bn;
+    return a.number < b.number;
+}
+
+// What an interrupted atomic write leaves behind: "<stem>.tmp-<pid>-<n><ext>".
+bool isTemporaryLeftover(const std::string& name) {
+    std::size_t p = name.find(".tmp-");
+    while (p != std::string::npos) {
+        std::size_t i = p + 5, digits1 = 0, digits2 = 0;
+        while (i < name.size() && std::isdigit(static_cast<unsigned char>(name[i]))) ++i, ++digits1;
+        if (digits1 && i < name.size() && name[i] == '-') {
+            ++i;
+            while (i < name.size() && std::isdigit(static_cast<unsigned char>(name[i]))) ++i, ++digits2;
+            if (digits2) return true;
+        }
+        p = name.find(".tmp-", p + 1);
+    }
+    return false;
+}
+
+}  // namespace
+
+struct CinemaWriter::Impl {
+    struct Entry {
+        std::vector<std::string> cells;  // parameter values as written
+        std::vector<SortCell> key;
+    };
+
+    std::string folder;
+    std::string csvPath;
+    std::vector<std::string> columns;
+    CinemaWriterOptions options;
+    std::unique_ptr<DatabaseLock> lock;
+    mutable std::mutex mutex;
+    std::map<std::string, Entry> entries;  // by product file name
+    std::size_t resumed = 0;
+    bool finished = false;
+
+    std::vector<std::string> cellsOf(const CinemaParameters& p) const {
+        std::vector<std::string> cells;
+        for (const auto& c : columns) {
+            auto it = p.find(c);
+            if (it == p.end())
+                throw Error(fmt::format("entry of database {}: parameter '{}' is missing; expected "
+                                        "values for {}",
+                                        folder, c, fmt::join(columns, ", ")));
+            std::string s = it->second.str();
+            if (s.find_first_of("\r\n") != std::string::npos)
+                throw Error(fmt::format("entry of database {}: the value of '{}' contains a line "
+                                        "break; data.csv cells cannot",
+                                        folder, c));
+            cells.push_back(std::move(s));
+        }
+        if (p.size() != columns.size())
+            for (const auto& [name, v] : p)
+                if (std::find(columns.begin(), columns.end(), name) == columns.end())
+                    throw Error(fmt::format("entry of database {}: '{}' is not a column; the columns "
+                                            "are {}",
+                                            folder, name, fmt::join(columns, ", ")));
+        return cells;
+    }
+
+    std::string fileNameOf(const std::vector<std::string>& cells) const {
+        std::vector<std::pair<std::string, std::string>> pairs;
+        for (std::size_t i = 0; i < columns.size(); ++i) pairs.emplace_back(columns[i], cells[i]);
+        return cinemaEntryName(pairs) + kProductExtension;
+    }
+
+    std::string describe(const std::vector<std::string>& cells) const {
+        std::string s;
+        for (std::size_t i = 0; i < columns.size(); ++i)
+            s += fmt::format("{}{}={}", i ? ", " : "", columns[i], cells[i]);
+        return s;
+    }
+
+    // Called with the mutex held.
+    void writeCsv() const {
+        std::vector<const std::pair<const std::string, Entry>*> sorted;
+        for (const auto& e : entries) sorted.push_back(&e);
+        std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) {
+            const auto& ka = a->second.key;
+            const auto& kb = b->second.key;
+            for (std::size_t i = 0; i < ka.size(); ++i) {
+                if (cellLess(ka[i], kb[i])) return true;
+                if (cellLess(kb[i], ka[i])) return false;
+            }
+            return a->first < b->first;  // total order even for equal values
+        });
+        std::string text;
+        for (const auto& c : columns) text += quoteCsvCell(c) + ",";
+        text += "FILE\n";
+        for (const auto* e : sorted) {
+            for (const auto& cell : e->second.cells) text += quoteCsvCell(cell) + ",";
+            text += quoteCsvCell(e->first) + "\n";
+        }
+        writeFileAtomic(csvPath, text);
+    }
+
+    void validateColumns() const {
+        std::set<std::string> seen;
+        for (const auto& c : columns) {
+            const bool bad = c.empty() || c.find_first_of(",\"\r\n=") != std::string::npos ||
+                             c.front() == ' ' || c.back() == ' ';
+            if (bad)
+                throw Error(fmt::format("database {}: column name '{}' is not usable; expected a "
+                                        "non-empty name without commas, quotes, '=' or line breaks",
+                                        folder, c));
+            if (isCinemaFileColumn(c))
+                throw Error(fmt::format("database {}: column name '{}' is reserved for product files",
+                                        folder, c));
+            if (!seen.insert(c).second)
+                throw Error(fmt::format("database {}: column '{}' is given twice", folder, c));
+        }
+    }
+
+    // Everything in the folder but our lock file.
+    std::vector<fs::path> contents() const {
+        std::vector<fs::path> out;
+        for (const auto& e : fs::directory_iterator(folder))
+            if (e.path().filename() != DatabaseLock::kFileName) out.push_back(e.path());
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
+    void removeTemporaryLeftovers() const {
+        for (const auto& p : contents())
+            if (isTemporaryLeftover(p.filename().string())) fs::remove_all(p);
+    }
+
+    void resumeExisting() {
+        removeTemporaryLeftovers();
+        if (!fs::exists(csvPath)) {
+            if (!contents().empty())
+                throw Error(fmt::format("cannot resume {}: it has no data.csv, so it is not a Cinema "
+                                        "database written by Darkroom; use --overwrite to replace it",
+                                        folder));
+            return;
+        }
+        CsvReadOptions strict;
+        strict.strict = true;
+        CsvTable table;
+        try {
+            table = readCsvFile(csvPath, strict);
+        } catch (const Error& e) {
+            throw Error(fmt::format("cannot resume {}: {}; use --overwrite to start afresh", folder,
+                                    e.what()));
+        }
+        std::vector<std::string> expected = columns;
+        expected.push_back("FILE");
+        if (table.header != expected)
+            throw Error(fmt::format("cannot resume {}: its columns are {} but this capture writes {}; "
+                                    "use --overwrite to replace it",
+                                    folder, fmt::join(table.header, ","), fmt::join(expected, ",")));
+        for (const auto& row : table.rows) {
+            std::vector<std::string> cells(row.begin(), row.end() - 1);
+            const std::string& file = row.back();
+            // Products are renamed into place complete, so one that exists
+            // under its final name is whole; a missing one is recomputed.
+            std::error_code ec;
+            const fs::path product = fs::path(folder) / file;
+            if (file != fileNameOf(cells) || !fs::is_regular_file(product, ec) ||
+                fs::file_size(product, ec) == 0)
+                continue;
+            Entry e{cells, {}};
+            for (const auto& c : cells) e.key.push_back(sortCell(c));
+            entries.emplace(file, std::move(e));
+        }
+        resumed = entries.size();
+    }
+
+    void removeForOverwrite() const {
+        if (!fs::exists(csvPath))
+            throw Error(fmt::format("refusing to overwrite {}: it is not empty and has no data.csv, so "
+                                    "it does not look like a Cinema database",
+                                    folder));
+        for (const auto& p : contents()) fs::remove_all(p);
+    }
+};
+
+CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnNames,
+                           CinemaWriterOptions options)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& d = *impl_;
+    while (path.size() > 1 && path.back() == '/') path.pop_back();
+    d.folder = std::move(path);
+    d.csvPath = (fs::path(d.folder) / "data.csv").string();
+    d.columns = std::move(columnNames);
+    d.options = std::move(options);
+    if (d.options.overwrite && d.options.resume)
+        throw Error(fmt::format("database {}: --overwrite and --resume exclude each other", d.folder));
+    d.validateColumns();
+
+    std::error_code ec;
+    if (fs::exists(d.folder, ec) && !fs::is_directory(d.folder, ec))
+        throw Error(fmt::format("cannot write database {}: a file of that name exists", d.folder));
+    fs::create_directories(d.folder, ec);
+    if (ec) throw Error(fmt::format("cannot create database folder {}: {}", d.folder, ec.message()));
+
+    d.lock = std::make_unique<DatabaseLock>(d.folder);
+    try {
+        if (!d.contents().empty()) {
+            if (d.options.resume)
+                d.resumeExisting();
+            else if (d.options.overwrite)
+                d.removeForOverwrite();
+            else
+                throw Error(fmt::format("database {} already exists and is not empty; use --overwrite "
+                                        "to replace it or --resume to complete it",
+                                        d.folder));
+        }
+        d.writeCsv();
+    } catch (const fs::filesystem_error& e) {
+        throw Error(fmt::format("database {}: {}", d.folder, e.what()));
+    }
+}
+
+CinemaWriter::~CinemaWriter() = default;
+
+const std::string& CinemaWriter::path() const { return impl_->folder; }
+const std::vector<std::string>& CinemaWriter::columns() const { return impl_->columns; }
+
+std::string CinemaWriter::entryFileName(const CinemaParameters& parameters) const {
+    return impl_->fileNameOf(impl_->cellsOf(parameters));
+}
+
+bool CinemaWriter::hasEntry(const CinemaParameters& parameters) const {
+    const auto cells = impl_->cellsOf(parameters);
+    const std::string file = impl_->fileNameOf(cells);
+    std::lock_guard<std::mutex> g(impl_->mutex);
+    auto it = impl_->entries.find(file);
+    return it != impl_->entries.end() && it->second.cells == cells;
+}
+
+void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& image) {
+    Impl& d = *impl_;
+    auto cells = d.cellsOf(parameters);
+    const std::string file = d.fileNameOf(cells);
+    {
+        std::lock_guard<std::mutex> g(d.mutex);
+        if (d.finished)
+            throw Error(fmt::format("database {}: addEntry after finish()", d.folder));
+        auto it = d.entries.find(file);
+        if (it != d.entries.end() && it->second.cells != cells)
+            throw Error(fmt::format("database {}: entries '{}' and '{}' would share the file {}; "
+                                    "make the parameter values distinguishable",
+                                    d.folder, d.describe(it->second.cells), d.describe(cells), file));
+    }
+    // The product first (atomically), the row naming it second: a kill in
+    // between leaves a product no row names, which a resume rewrites.
+    writeImage(image, (fs::path(d.folder) / file).string(), d.options.image);
+    std::lock_guard<std::mutex> g(d.mutex);
+    Impl::Entry e{std::move(cells), {}};
+    for (const auto& c : e.cells) e.key.push_back(sortCell(c));
+    d.entries.insert_or_assign(file, std::move(e));
+    d.writeCsv();
+}
+
+std::size_t CinemaWriter::entryCount() const {
+    std::lock_guard<std::mutex> g(impl_->mutex);
+    return impl_->entries.size();
+}
+
+std::size_t CinemaWriter::resumedCount() const { return impl_->resumed; }
+
+void CinemaWriter::finish() {
+    std::lock_guard<std::mutex> g(impl_->mutex);
+    if (impl_->finished) return;
+    impl_->writeCsv();
+    impl_->finished = true;
+    impl_->lock->releaseAndRemove();
+}
+
+}  // namespace darkroom
