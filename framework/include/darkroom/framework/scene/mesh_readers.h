@@ -1,0 +1,33 @@
+#pragma once
+// Mesh file readers for capture scenes. Each returns the file's geometry as
+// SceneObjects ready for a capture backend: a file may hold a surface part
+// (polygons, fan-triangulated, and triangle strips), a lines part (polylines
+// split into segments) and a vertices part (points drawn as spheres), named
+// "<name>/surface", "<name>/lines", "<name>/points" when there are several, or
+// just "<name>" (the file's stem by default). Vertex radii are 0; the scene file sets them.
+//
+// Data arrays become ScalarFields: point data per vertex, cell data per cell
+// with SceneObject::primitiveCell mapping triangles/segments back to their cell.
+// A multi-component array `v` becomes `v` (the magnitude) and `v_0`, `v_1`, ...
+// Every problem throws darkroom::Error naming the file and the line (text) or
+// element (binary) and what was expected. See docs/scene-format.md.
+#include <darkroom/export.h>
+#include <darkroom/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace darkroom {
+
+// Dispatches on the extension: .ply, .obj, .vtk, .vtp, .vtu (case-insensitive).
+// `warnings`, when given, receives notes about skipped content (e.g. 3D cells).
+DARKROOM_API std::vector<SceneObject> readMesh(const std::string& path,
+                                               std::vector<std::string>* warnings = nullptr);
+
+DARKROOM_API std::vector<SceneObject> readPly(const std::string& path);
+DARKROOM_API std::vector<SceneObject> readObj(const std::string& path);
+DARKROOM_API std::vector<SceneObject> readVtkLegacy(const std::string& path);
+DARKROOM_API std::vector<SceneObject> readVtkXml(const std::string& path,
+                                                 std::vector<std::string>* warnings = nullptr);
+
+}  // namespace darkroom
