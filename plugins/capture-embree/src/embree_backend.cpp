@@ -1,0 +1,144 @@
+#include "embree_backend.h"
+
+#include "embree_scene.h"
+#include "gbuffer_writer.h"
+#include "primary_rays.h"
+
+#include <darkroom/error.h>
+#include <embree3/rtcore.h>
+#include <xmmintrin.h>
+#include <pmmintrin.h>
+
+#include <cmath>
+#include <limits>
+
+namespace darkroom::embree {
+
+namespace {
+
+// Tiles are the unit of parallel work; packets are 4x2 pixel blocks inside a
+// tile, since square-ish blocks keep the 8 rays of a packet close together and
+// traverse the BVH with the same nodes (Embree's packet traversal benefits
+// from coherence; the COHERENT flag says so). The split is fixed, whatever the
+// thread count, so every pixel is traced in the same packet every time.
+constexpr int kTile = 16;
+constexpr int kPacketW = 4;
+constexpr int kPacketH = 2;
+static_assert(kPacketW * kPacketH == 8 && kTile % kPacketW == 0 && kTile % kPacketH == 0);
+
+// Embree recommends flush-to-zero and denormals-are-zero for speed. The
+// worker threads belong to the host, so the previous mode is restored.
+class FlushDenormals {
+public:
+    FlushDenormals() : saved_(_mm_getcsr()) {
+        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    }
+    ~FlushDenormals() { _mm_setcsr(saved_); }
+
+private:
+    unsigned saved_;
+};
+
+class EmbreeBackend final : public CaptureBackend {
+public:
+    EmbreeBackend() : device_(std::make_shared<Device>()) {}
+
+    void setScene(std::shared_ptr<const Scene> scene) override {
+        bvh_.reset();  // release the old BVH before building the next one
+        bvh_ = std::make_unique<SceneBvh>(device_, std::move(scene));
+    }
+
+    BufferPtr render(const Camera& camera, const CaptureRequest& request, Context& ctx) override {
+        if (!bvh_) throw Error("embree capture: render() called before setScene()");
+        if (camera.width <= 0 || camera.height <= 0)
+            throw Error("embree capture: the camera's resolution is " + std::to_string(camera.width) + "x" +
+                        std::to_string(camera.height) + "; expected a positive width and height");
+        if (!(camera.halfHeight() > 0) || !std::isfinite(camera.halfHeight()))
+            throw Error("embree capture: the camera's field of view / view height must be positive and finite");
+
+        auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request));
+        buffer->metadata().camera = camera;
+        buffer->metadata().attributes["units.Z"] = "world";
+        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        const PrimaryRays rays(camera);
+
+        const int tilesX = (camera.width + kTile - 1) / kTile;
+        const int tilesY = (camera.height + kTile - 1) / kTile;
+        RTCScene scene = bvh_->handle();
+        ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
+            const FlushDenormals ftz;
+            RTCIntersectContext ic;
+            rtcInitIntersectContext(&ic);
+            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            for (int tile = begin; tile < end; ++tile) {
+                if (ctx.cancelled()) return;
+                traceTile(scene, &ic, rays, writer, camera.width, camera.height, (tile % tilesX) * kTile,
+                          (tile / tilesX) * kTile);
+            }
+        });
+        if (ctx.cancelled()) throw Cancelled();
+        ctx.progress(1.0);
+        return buffer;
+    }
+
+private:
+    static void traceTile(RTCScene scene, RTCIntersectContext* ic, const PrimaryRays& rays,
+                          const GBufferWriter& writer, int width, int height, int x0, int y0) {
+        alignas(32) RTCRayHit8 rh;
+        alignas(32) int valid[8];
+        const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
+        for (int py = y0; py < y1; py += kPacketH) {
+            for (int px = x0; px < x1; px += kPacketW) {
+                // Edge tiles keep the packet shape and switch lanes off.
+                for (int k = 0; k < 8; ++k) {
+                    const int x = px + k % kPacketW, y = py + k / kPacketW;
+                    valid[k] = (x < x1 && y < y1) ? -1 : 0;
+                    float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
+                    if (valid[k]) rays(x, y, o, d);
+                    rh.ray.org_x[k] = o[0];
+                    rh.ray.org_y[k] = o[1];
+                    rh.ray.org_z[k] = o[2];
+                    rh.ray.dir_x[k] = d[0];
+                    rh.ray.dir_y[k] = d[1];
+                    rh.ray.dir_z[k] = d[2];
+                    rh.ray.tnear[k] = 0.0f;
+                    rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
+                    rh.ray.time[k] = 0.0f;
+                    rh.ray.mask[k] = 0xFFFFFFFFu;
+                    rh.ray.id[k] = unsigned(k);
+                    rh.ray.flags[k] = 0;
+                    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+                }
+                rtcIntersect8(valid, scene, ic, &rh);
+                for (int k = 0; k < 8; ++k) {
+                    if (!valid[k]) continue;
+                    const std::size_t pixel =
+                        std::size_t(py + k / kPacketW) * std::size_t(width) + std::size_t(px + k % kPacketW);
+                    if (rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+                        writer.miss(pixel);
+                        continue;
+                    }
+                    const SurfaceHit h{rh.ray.tfar[k],
+                                       rh.hit.geomID[k],
+                                       rh.hit.primID[k],
+                                       rh.hit.u[k],
+                                       rh.hit.v[k],
+                                       {rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]}};
+                    const float d[3] = {rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]};
+                    writer.hit(pixel, h, d);
+                }
+            }
+        }
+    }
+
+    std::shared_ptr<Device> device_;
+    std::unique_ptr<SceneBvh> bvh_;
+};
+
+}  // namespace
+
+std::unique_ptr<CaptureBackend> createBackend() { return std::make_unique<EmbreeBackend>(); }
+
+}  // namespace darkroom::embree
