@@ -1,0 +1,201 @@
+// The writer: file layout, read-back, refusal to overwrite, resume and the
+// in-process side of locking. Cross-process locking and SIGKILL are in
+// kill_resume_test.cpp.
+#include "cinema_test_data.h"
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/cinema/database.h>
+#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/framework/image_io.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <unistd.h>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<std::string> kColumns = {"phi", "theta"};
+
+void writeGrid(const std::string& path, CinemaWriterOptions options = {}) {
+    CinemaWriter w(path, kColumns, options);
+    for (const auto& p : test::gridEntries())
+        if (!w.hasEntry(p)) w.addEntry(p, *test::gridImage(p));
+    w.finish();
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST(CinemaWriter, WritesSortedDataCsvAndOneExrPerEntry) {
+    test::TempDir dir;
+    const auto db = dir.file("grid.cdb");
+    auto entries = test::gridEntries();
+    std::reverse(entries.begin(), entries.end());  // order of adding must not matter
+    {
+        CinemaWriter w(db, kColumns);
+        for (const auto& p : entries) w.addEntry(p, *test::gridImage(p));
+        EXPECT_EQ(w.entryCount(), 20u);
+        w.finish();
+    }
+    const std::string csv = test::readText(db + "/data.csv");
+    EXPECT_EQ(csv.substr(0, csv.find('\n', csv.find('\n', csv.find('\n') + 1) + 1) + 1),
+              "phi,theta,FILE\n"
+              "-45,-30,phi=-45_theta=-30.exr\n"
+              "-45,0,phi=-45_theta=0.exr\n");
+    EXPECT_THAT(csv, HasSubstr("\n-22.5,60,phi=-22.5_theta=60.exr\n"));
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 21);
+    EXPECT_FALSE(fs::exists(db + "/.lock"));  // finish() removes the lock
+    std::size_t files = 0;
+    for (const auto& e : fs::directory_iterator(db)) files += e.path().extension() == ".exr";
+    EXPECT_EQ(files, 20u);
+}
+
+TEST(CinemaWriter, ReaderReadsBackExactlyWhatWasWritten) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    const auto db = CinemaDatabase::open(path);
+    EXPECT_EQ(db.rowCount(), 20u);
+    EXPECT_TRUE(db.warnings().empty());
+    EXPECT_TRUE(db.columns()[0].numeric);
+    EXPECT_EQ(db.columns()[0].minimum, -45);
+    for (const auto& p : test::gridEntries()) {
+        const auto query = "phi=" + p.at("phi").str() + ", theta=" + p.at("theta").str();
+        const auto row = db.find(query).row;
+        const auto back = readImage(db.productPath(row));
+        const auto written = test::gridImage(p);
+        EXPECT_TRUE(identical(*back, *written)) << query;
+        EXPECT_EQ(db.formatParameters(row), query);
+    }
+    const auto d = db.describe();
+    ASSERT_EQ(d.products.size(), 1u);
+    EXPECT_EQ(d.products[0].width, 32);
+    ASSERT_TRUE(d.products[0].camera.has_value());
+    EXPECT_EQ(d.products[0].channels.size(), 3u);
+}
+
+TEST(CinemaWriter, RefusesAnExistingDatabaseWithoutOverwriteOrResume) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    const std::string before = test::readText(path + "/data.csv");
+    const std::string msg = errorOf([&] { CinemaWriter w(path, kColumns); });
+    EXPECT_THAT(msg, HasSubstr(path));
+    EXPECT_THAT(msg, HasSubstr("--overwrite"));
+    EXPECT_THAT(msg, HasSubstr("--resume"));
+    EXPECT_EQ(test::readText(path + "/data.csv"), before);  // untouched
+    // An empty existing folder is fine.
+    fs::create_directories(dir.file("empty.cdb"));
+    EXPECT_NO_THROW(CinemaWriter(dir.file("empty.cdb"), kColumns).finish());
+}
+
+TEST(CinemaWriter, OverwriteStartsAfreshButNeverDeletesANonDatabase) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    CinemaWriterOptions o;
+    o.overwrite = true;
+    {
+        CinemaWriter w(path, {"time"}, o);
+        w.addEntry({{"time", 1}}, *test::gridImage({{"phi", 0}, {"theta", 0}}));
+        w.finish();
+    }
+    EXPECT_EQ(test::readText(path + "/data.csv"), "time,FILE\n1,time=1.exr\n");
+    EXPECT_FALSE(fs::exists(path + "/phi=0_theta=0.exr"));
+
+    fs::create_directories(dir.file("home"));
+    test::writeText(dir.file("home/thesis.tex"), "precious");
+    const std::string msg = errorOf([&] { CinemaWriter w(dir.file("home"), kColumns, o); });
+    EXPECT_THAT(msg, HasSubstr("does not look like a Cinema database"));
+    EXPECT_EQ(test::readText(dir.file("home/thesis.tex")), "precious");
+}
+
+TEST(CinemaWriter, ResumeKeepsCompleteEntriesAndRecomputesTheRest) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    const std::string full = test::readText(path + "/data.csv");
+    // Damage it the ways an interrupted run or a user could: a product gone,
+    // a temporary file left behind.
+    fs::remove(path + "/phi=0_theta=30.exr");
+    test::writeText(path + "/phi=45_theta=60.tmp-123-4.exr", "torn");
+    CinemaWriterOptions o;
+    o.resume = true;
+    {
+        CinemaWriter w(path, kColumns, o);
+        EXPECT_EQ(w.resumedCount(), 19u);
+        EXPECT_FALSE(w.hasEntry({{"phi", 0}, {"theta", 30}}));
+        EXPECT_TRUE(w.hasEntry({{"phi", 45}, {"theta", 60}}));
+        EXPECT_FALSE(fs::exists(path + "/phi=45_theta=60.tmp-123-4.exr"));
+        std::size_t added = 0;
+        for (const auto& p : test::gridEntries())
+            if (!w.hasEntry(p)) w.addEntry(p, *test::gridImage(p)), ++added;
+        EXPECT_EQ(added, 1u);
+        w.finish();
+    }
+    EXPECT_EQ(test::readText(path + "/data.csv"), full);
+    // Other columns cannot be resumed into.
+    const std::string msg = errorOf([&] { CinemaWriter w(path, {"time"}, o); });
+    EXPECT_THAT(msg, HasSubstr("columns are phi,theta,FILE"));
+    EXPECT_THAT(msg, HasSubstr("--overwrite"));
+}
+
+TEST(CinemaWriter, SecondWriterInTheSameProcessIsLockedOut) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    CinemaWriter first(path, kColumns);
+    CinemaWriterOptions o;
+    o.resume = true;
+    const std::string msg = errorOf([&] { CinemaWriter second(path, kColumns, o); });
+    EXPECT_THAT(msg, HasSubstr("database " + path + " is being written by another process (pid " +
+                               std::to_string(::getpid()) + ")"));
+    first.finish();
+    EXPECT_NO_THROW(CinemaWriter(path, kColumns, o).finish());
+}
+
+TEST(CinemaWriter, EntryFileNamesAreSafeAndDeterministic) {
+    test::TempDir dir;
+    CinemaWriter w(dir.file("n.cdb"), {"phi", "label"});
+    EXPECT_EQ(w.entryFileName({{"phi", -22.5}, {"label", "a/b c"}}), "phi=-22.5_label=a~b~c.exr");
+    EXPECT_EQ(w.entryFileName({{"phi", 1e-7}, {"label", "x"}}), "phi=1e-07_label=x.exr");
+    EXPECT_EQ(w.entryFileName({{"phi", -0.0}, {"label", "x"}}), "phi=0_label=x.exr");
+    const auto img = test::gridImage({{"phi", 0}, {"theta", 0}});
+    w.addEntry({{"phi", 1}, {"label", "a b"}}, *img);
+    EXPECT_THAT(errorOf([&] { w.addEntry({{"phi", 1}, {"label", "a~b"}}, *img); }),
+                HasSubstr("would share the file"));
+    EXPECT_THAT(errorOf([&] { w.addEntry({{"phi", 1}}, *img); }), HasSubstr("'label' is missing"));
+    EXPECT_THAT(errorOf([&] { w.addEntry({{"phi", 1}, {"label", "x"}, {"rho", 2}}, *img); }),
+                HasSubstr("'rho' is not a column"));
+    w.finish();
+    EXPECT_THAT(errorOf([&] { w.addEntry({{"phi", 2}, {"label", "x"}}, *img); }),
+                HasSubstr("after finish"));
+    // The text value with a space is quoted in data.csv and reads back.
+    const auto db = CinemaDatabase::open(dir.file("n.cdb"));
+    EXPECT_EQ(db.cell(0, 1), "a b");
+}
+
+TEST(CinemaWriter, UnusableColumnNamesAreRefused) {
+    test::TempDir dir;
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(dir.file("a.cdb"), {"FILE"}); }), HasSubstr("reserved"));
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(dir.file("b.cdb"), {"a,b"}); }), HasSubstr("not usable"));
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(dir.file("c.cdb"), {"x", "x"}); }), HasSubstr("twice"));
+    test::writeText(dir.file("file.cdb"), "");
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(dir.file("file.cdb"), {"x"}); }),
+                HasSubstr("a file of that name exists"));
+}
