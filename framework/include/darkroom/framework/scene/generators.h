@@ -1,7 +1,19 @@
 #pragma once
 // Built-in scene generators: geometry made in code, so the demo and the tests
-// need no download. Owned by the generators work; the scene file calls generate().
+// need no download. The scene file calls generate() for `generator: NAME`.
+//
+//   isosurface   level set of demoField() by marching tetrahedra (Surface;
+//                point fields `height` = z, `field`, `gradient magnitude`)
+//   streamlines  RK4 streamlines of the ABC flow (Lines; `time`, `speed`)
+//   particles    hashed particle halo around the blobs (Points; `value`, `id`)
+//   maxima       spheres at the local maxima of demoField() (Points; `value`)
+//   plane        a subdivided square, e.g. a floor (Surface; `height`)
+//   demo         isosurface + streamlines + particles + maxima in one view
+//
+// Every generator works with no parameters; docs/generators.md lists them all.
+// Output is deterministic: random positions come from hashing (seed, index).
 #include <darkroom/export.h>
+#include <darkroom/math.h>
 #include <darkroom/scene.h>
 
 #include <map>
@@ -19,4 +31,20 @@ DARKROOM_API std::vector<std::string> generatorNames();
 DARKROOM_API std::vector<SceneObject> generate(const std::string& name,
                                                const std::map<std::string, std::string>& params);
 
+namespace generators {
+
+// The demo's analytic scalar field on [-1,1]^3: a sum of Gaussian blobs (some
+// overlapping, some too weak to reach the default isovalue 0.5 so their maxima
+// float outside the surface) plus a tilted ring whose strength varies as
+// cos(3 angle), giving a torus with three maxima. Below 0.02 on the cube's
+// faces, so every level set above that is closed inside the cube.
+DARKROOM_API double demoField(const Vec3& p);
+DARKROOM_API Vec3 demoFieldGradient(const Vec3& p);
+
+// Velocity of the ABC flow u = (A sin z + C cos y, B sin x + A cos z,
+// C sin y + B cos x) with its 2π-periodic cell mapped onto [-1,1]^3
+// (x_flow = π (p + 1)), expressed in world units per unit of flow time.
+DARKROOM_API Vec3 abcVelocity(const Vec3& p, double a, double b, double c);
+
+}  // namespace generators
 }  // namespace darkroom
