@@ -1,0 +1,109 @@
+// CinemaReader through the registry, as a pipeline would run it.
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/framework/image_io.h>
+#include <darkroom/framework/run_filter.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+
+namespace {
+
+FilterRunResult readEntry(const std::string& db, const std::string& parameters,
+                          const std::string& file = "") {
+    auto f = test::pluginRegistry().createFilter("CinemaReader");
+    std::map<std::string, std::vector<Value>> in{{"database", {Value(db)}},
+                                                 {"parameters", {Value(parameters)}}};
+    if (!file.empty()) in["file"] = {Value(file)};
+    return runFilter(*f, in);
+}
+
+bool samePixels(const Buffer& a, const Buffer& b) {
+    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels()) return false;
+    for (const auto& c : a.channels()) {
+        const float* x = a.hostFloat(c.name);
+        const float* y = b.hostFloat(c.name);
+        if (!x || !y || std::memcmp(x, y, a.pixelCount() * sizeof(float)) != 0) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+TEST(CinemaReader, ReadsAPngEntryAsColour) {
+    const auto db = test::sharedData("cinema/sphere.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto r = readEntry(db, "phi=-162, theta=0");
+    const auto& image = r.outputs.at("image").asImage();
+    ASSERT_TRUE(image);
+    EXPECT_EQ(image->width(), 519);
+    EXPECT_EQ(image->height(), 422);
+    EXPECT_TRUE(image->hasChannel("R") && image->hasChannel("G") && image->hasChannel("B"));
+    EXPECT_TRUE(samePixels(*image, *readImage(db + "/image/-162/0.png")));
+    EXPECT_TRUE(r.warnings.empty());
+}
+
+TEST(CinemaReader, EmptyParametersTakeTheFirstRowAndFileChoosesTheColumn) {
+    const auto db = test::sharedData("cinema/multiple_artifacts.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto first = readEntry(db, "").outputs.at("image").asImage();
+    EXPECT_TRUE(samePixels(*first, *readImage(db + "/image/-180/0.png")));
+    const auto second = readEntry(db, "phi=-144", "FILE2").outputs.at("image").asImage();
+    EXPECT_TRUE(samePixels(*second, *readImage(db + "/image_02/-144/0.png")));
+}
+
+TEST(CinemaReader, SnapsToTheNearestValueWithAWarning) {
+    const auto db = test::sharedData("cinema/periodicPicture.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto r = readEntry(db, "angle=11");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_THAT(r.warnings[0], HasSubstr("nearest value 10.8"));
+    EXPECT_TRUE(samePixels(*r.outputs.at("image").asImage(), *readImage(db + "/data/pic32.0003.png")));
+}
+
+TEST(CinemaReader, ReadsBackWhatTheWriterWroteExactly) {
+    test::TempDir dir;
+    const auto path = dir.file("w.cdb");
+    auto image = makeCpuBuffer(8, 6, {{"Z", ChannelType::Float32}, {"id", ChannelType::UInt32}});
+    for (std::size_t i = 0; i < image->pixelCount(); ++i) {
+        image->hostFloat("Z")[i] = float(i) * 0.25f;
+        image->hostUInt("id")[i] = std::uint32_t(i * 3);
+    }
+    Camera cam;
+    cam.width = 8;
+    cam.height = 6;
+    image->metadata().camera = cam;
+    {
+        CinemaWriter w(path, {"time", "phi"});
+        w.addEntry({{"time", 0.5}, {"phi", -30}}, *image);
+        w.addEntry({{"time", 0.5}, {"phi", 30}}, *makeCpuBuffer(8, 6, {{"Z", ChannelType::Float32}}));
+        w.finish();
+    }
+    const auto r = readEntry(path, "time=0.5, phi=-30");
+    EXPECT_TRUE(identical(*r.outputs.at("image").asImage(), *image));
+}
+
+TEST(CinemaReader, NoMatchNamesTheDatabaseAndListsValues) {
+    const auto db = test::sharedData("cinema/sphere.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    try {
+        readEntry(db, "phi=500");
+        FAIL() << "phi=500 is not in the database";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("sphere.cdb"));
+        EXPECT_THAT(e.what(), HasSubstr("-180, -162, -144"));
+    }
+    try {
+        readEntry(db + "/../no-such.cdb", "");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("no-such.cdb"));
+    }
+}
