@@ -2,8 +2,10 @@
 #
 # One GoogleTest executable registered with ctest. Tests find the build's
 # plugins, the source tree and ../shared/data through compile definitions.
-include(GoogleTest)
-find_package(GTest REQUIRED)
+if(DARKROOM_BUILD_TESTS)
+  include(GoogleTest)
+  find_package(GTest REQUIRED)
+endif()
 
 function(darkroom_add_gtest NAME)
   if(NOT DARKROOM_BUILD_TESTS)

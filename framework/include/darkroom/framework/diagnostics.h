@@ -13,6 +13,7 @@ struct Diagnostic {
     Severity severity = Severity::Error;
     std::string where;
     std::string message;
+    std::string node;  // the node concerned, when there is one
 
     std::string str() const {
         return (where.empty() ? std::string() : where + ": ") +

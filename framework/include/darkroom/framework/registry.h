@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,7 @@ private:
     std::map<std::string, RegisteredFilter> filters_;
     std::map<std::string, RegisteredBackend> backends_;
     std::vector<LoadedPlugin> plugins_;
+    mutable std::mutex portMutex_;
     mutable std::map<std::string, PortList> portCache_;
     std::vector<void*> handles_;
 };

@@ -1,0 +1,30 @@
+#pragma once
+// Shared plumbing of the runner's subcommands: exit codes, error printing,
+// the plugin registry built from the search path.
+#include <darkroom/framework/diagnostics.h>
+#include <darkroom/framework/registry.h>
+
+#include <string>
+#include <vector>
+
+namespace darkroom::cli {
+
+enum ExitCode : int { kOk = 0, kRuntimeFailure = 1, kBadInput = 2 };
+
+struct GlobalOptions {
+    std::vector<std::string> pluginPaths;  // --plugin-path, searched after the defaults
+    bool quiet = false;
+};
+
+// Prints one line per diagnostic on stderr ("darkroom: <where>: error: <message>").
+void report(const Diagnostics& diagnostics);
+void reportError(const std::string& message);
+
+// Loads plugins from the default search path plus --plugin-path. Plugins that
+// fail are reported as warnings and skipped; the runner goes on.
+Registry& loadRegistry(const GlobalOptions& options);
+
+// True when stderr is a terminal (progress bars only then).
+bool stderrIsTerminal();
+
+}  // namespace darkroom::cli

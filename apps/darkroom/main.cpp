@@ -1,0 +1,51 @@
+// darkroom: the headless runner. Lists and describes plugins, validates and
+// runs pipelines. Exit codes: 0 success, 1 runtime failure, 2 bad usage or input.
+#include "commands.h"
+
+#include <darkroom/error.h>
+#include <darkroom/version.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    using namespace darkroom::cli;
+    CLI::App app{"Darkroom: deferred shading of scientific datasets (SDK " DARKROOM_SDK_VERSION ")", "darkroom"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "darkroom " DARKROOM_SDK_VERSION);
+    GlobalOptions global;
+    app.add_option("--plugin-path", global.pluginPaths,
+                   "Extra plugin directory or file, searched after the executable's plugin folder and "
+                   "DARKROOM_PLUGIN_PATH (repeatable)")
+        ->type_name("DIR");
+    app.add_flag("-q,--quiet", global.quiet, "No progress output");
+
+    Runner run;
+    addPluginsCommand(app, global, run);
+    addDescribeCommand(app, global, run);
+    addValidateCommand(app, global, run);
+    addRunCommand(app, global, run);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "darkroom: error: %s\nRun 'darkroom --help' for usage.\n", e.what());
+        return kBadInput;
+    }
+    try {
+        return run ? run() : kBadInput;
+    } catch (const darkroom::Cancelled&) {
+        reportError("cancelled");
+        return kRuntimeFailure;
+    } catch (const std::exception& e) {
+        reportError(e.what());
+        return kRuntimeFailure;
+    }
+}
