@@ -1,0 +1,203 @@
+// writeImage(): a Buffer -> EXR (every channel, exact) or an 8-bit sRGB file.
+#include "image_metadata.h"
+#include "oiio_message.h"
+
+#include <darkroom/atomic_file.h>
+#include <darkroom/error.h>
+#include <darkroom/framework/image_io.h>
+#include <darkroom/srgb.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <Imath/half.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+namespace darkroom {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+    throw Error("cannot write image '" + path + "': " + why);
+}
+
+std::string listChannels(const Buffer& b) {
+    std::string s;
+    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name + " (" + toString(c.type) + ")";
+    return s.empty() ? std::string("none") : s;
+}
+
+void checkCompression(const std::string& path, const std::string& compression) {
+    static const char* const known[] = {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"};
+    const std::string base = compression.substr(0, compression.find(':'));
+    for (const char* k : known)
+        if (base == k) return;
+    fail(path, "unknown EXR compression '" + compression +
+                   "' (expected none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa or dwab)");
+}
+
+// Writes `spec` and the native-layout pixels to a temporary file, then renames.
+void writeAtomically(const std::string& path, OIIO::ImageOutput& out, const OIIO::ImageSpec& spec,
+                     OIIO::TypeDesc format, const void* pixels) {
+    const std::string tmp = temporaryPathFor(path);
+    auto oiioFail = [&]() {
+        const std::string e = io::oneLine(out.geterror());
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        fail(path, e);
+    };
+    if (!out.open(tmp, spec)) oiioFail();
+    if (!out.write_image(format, pixels)) {
+        out.close();
+        oiioFail();
+    }
+    if (!out.close()) oiioFail();
+    commitFile(tmp, path);
+}
+
+void writeExr(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+              OIIO::ImageOutput& out) {
+    checkCompression(path, options.compression);
+    std::vector<ChannelDesc> channels;
+    if (options.channels.empty()) {
+        channels = image.channels();
+    } else {
+        for (const auto& name : options.channels) {
+            const auto type = image.channelType(name);
+            if (!type) fail(path, "the image has no channel '" + name + "'; it has " + listChannels(image));
+            channels.push_back({name, *type});
+        }
+    }
+    if (channels.empty()) fail(path, "the image has no channels");
+    const int n = int(channels.size());
+
+    OIIO::ImageSpec spec(image.width(), image.height(), n, OIIO::TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    std::vector<std::size_t> offset(channels.size());
+    std::size_t pixelBytes = 0;
+    for (int c = 0; c < n; ++c) {
+        const ChannelDesc& ch = channels[std::size_t(c)];
+        spec.channelnames.push_back(ch.name);
+        const bool half = options.halfFloat && ch.type == ChannelType::Float32 && ch.name != "Z";
+        const OIIO::TypeDesc t = ch.type == ChannelType::UInt32 ? OIIO::TypeDesc::UINT32
+                                 : half                         ? OIIO::TypeDesc::HALF
+                                                                : OIIO::TypeDesc::FLOAT;
+        spec.channelformats.push_back(t);
+        offset[std::size_t(c)] = pixelBytes;
+        pixelBytes += t.size();
+        if (ch.name == "A") spec.alpha_channel = c;
+        if (ch.name == "Z") spec.z_channel = c;
+    }
+    spec.attribute("compression", options.compression);
+    std::vector<std::string> order;
+    for (const auto& c : channels) order.push_back(c.name);
+    io::putMetadata(image.metadata(), order, spec);
+
+    // Native layout: pixel-interleaved, each channel in its file type.
+    const std::size_t pixels = image.pixelCount();
+    std::vector<unsigned char> data(pixels * pixelBytes);
+    for (int c = 0; c < n; ++c) {
+        const ChannelDesc& ch = channels[std::size_t(c)];
+        unsigned char* dst = data.data() + offset[std::size_t(c)];
+        if (spec.channelformats[std::size_t(c)] == OIIO::TypeDesc::HALF) {
+            const float* src = image.hostFloat(ch.name);
+            for (std::size_t p = 0; p < pixels; ++p) {
+                const Imath::half h(src[p]);
+                std::memcpy(dst + p * pixelBytes, &h, sizeof h);
+            }
+        } else {
+            const void* src = ch.type == ChannelType::UInt32 ? static_cast<const void*>(image.hostUInt(ch.name))
+                                                             : static_cast<const void*>(image.hostFloat(ch.name));
+            const unsigned char* s = static_cast<const unsigned char*>(src);
+            for (std::size_t p = 0; p < pixels; ++p) std::memcpy(dst + p * pixelBytes, s + p * 4, 4);
+        }
+    }
+    writeAtomically(path, out, spec, OIIO::TypeUnknown, data.data());
+}
+
+std::vector<std::string> defaultEightBitChannels(const Buffer& image, const std::string& path) {
+    auto isFloat = [&](const char* n) { return image.channelType(n) == ChannelType::Float32; };
+    std::vector<std::string> ch;
+    if (isFloat("R") && isFloat("G") && isFloat("B"))
+        ch = {"R", "G", "B"};
+    else if (isFloat("Y"))
+        ch = {"Y"};
+    else {
+        for (const auto& c : image.channels())
+            if (c.type == ChannelType::Float32 && c.name != "Z" && c.name != "A") ch.push_back(c.name);
+        if (ch.size() != 1)
+            fail(path, "cannot choose which channels to write as 8-bit grey or colour from " +
+                           listChannels(image) + "; name them (ImageWriter's 'channels')");
+    }
+    if (isFloat("A")) ch.push_back("A");
+    return ch;
+}
+
+void writeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+                   OIIO::ImageOutput& out) {
+    std::vector<std::string> names =
+        options.channels.empty() ? defaultEightBitChannels(image, path) : options.channels;
+    if (names.empty() || names.size() > 4)
+        fail(path, "an 8-bit image takes 1 to 4 channels (grey, grey+alpha, RGB, RGBA), not " +
+                       std::to_string(names.size()));
+    // JPEG has no alpha: keep grey or RGB.
+    if (!out.supports("alpha") && (names.size() == 2 || names.size() == 4)) names.pop_back();
+    const int n = int(names.size());
+    const bool hasAlpha = n == 2 || n == 4;
+    std::vector<const float*> src;
+    for (const auto& name : names) {
+        const float* p = image.hostFloat(name);
+        if (!p)
+            fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " +
+                           listChannels(image));
+        src.push_back(p);
+    }
+
+    // Linear -> sRGB code value (round to nearest), NaN -> 0; alpha is stored linearly.
+    auto encode = [](float v, bool alpha) -> unsigned char {
+        if (!(v > 0.0f)) return 0;  // also NaN
+        if (v >= 1.0f) return 255;
+        return (unsigned char)std::lround((alpha ? v : linearToSrgb(v)) * 255.0f);
+    };
+
+    const std::size_t pixels = image.pixelCount();
+    std::vector<unsigned char> data(pixels * std::size_t(n));
+    for (std::size_t p = 0; p < pixels; ++p)
+        for (int c = 0; c < n; ++c) data[p * n + c] = encode(src[std::size_t(c)][p], hasAlpha && c == n - 1);
+
+    OIIO::ImageSpec spec(image.width(), image.height(), n, OIIO::TypeDesc::UINT8);
+    spec.channelnames.clear();
+    static const char* const grey[] = {"Y", "A"};
+    static const char* const rgba[] = {"R", "G", "B", "A"};
+    for (int c = 0; c < n; ++c) spec.channelnames.emplace_back(n <= 2 ? grey[c] : rgba[c]);
+    spec.alpha_channel = hasAlpha ? n - 1 : -1;
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    // The data is straight alpha: OIIO must not divide it by alpha again.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    writeAtomically(path, out, spec, OIIO::TypeDesc::UINT8, data.data());
+}
+
+}  // namespace
+
+void writeImage(const Buffer& image, const std::string& path, const ImageWriteOptions& options) {
+    if (image.width() <= 0 || image.height() <= 0) fail(path, "the image is empty");
+    const fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        fail(path, "the folder '" + parent.string() + "' does not exist");
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) {
+        fail(path, "no image format for this file name (" + io::oneLine(OIIO::geterror()) + ")");
+    }
+    if (std::string(out->format_name()) == "openexr")
+        writeExr(image, path, options, *out);
+    else
+        writeEightBit(image, path, options, *out);
+}
+
+}  // namespace darkroom
