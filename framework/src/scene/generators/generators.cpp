@@ -23,7 +23,7 @@ std::vector<SceneObject> demo(GeneratorParams& p) {
     iso.resolution = p.integer("resolution", iso.resolution, 2, 512);
     iso.isovalue = p.number("isovalue", iso.isovalue, 0.05, 1.2);
     StreamlineOptions lines;
-    lines.count = p.integer("streamlines", 60, 0, 100000);
+    lines.count = p.integer("streamlines", 40, 0, 100000);
     lines.radius = 0.005;
     ParticleOptions particles;
     particles.count = p.integer("particles", particles.count, 0, 10000000);

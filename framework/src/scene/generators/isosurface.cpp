@@ -12,9 +12,9 @@ namespace darkroom::generators {
 IsosurfaceOptions readIsosurfaceOptions(GeneratorParams& p) {
     IsosurfaceOptions o;
     o.resolution = p.integer("resolution", o.resolution, 2, 512);
-    // The field peaks at ~1.04 and is < 0.02 on the cube's faces: outside
+    // The field peaks at ~1.07 and is < 0.04 on the cube's faces: outside
     // this range the surface would be empty or cut open by the cube.
-    o.isovalue = p.number("isovalue", o.isovalue, 0.02, 1.2);
+    o.isovalue = p.number("isovalue", o.isovalue, 0.05, 1.2);
     p.finish();
     return o;
 }

@@ -34,7 +34,7 @@ ParticleOptions readParticleOptions(GeneratorParams& p) {
     ParticleOptions o;
     o.count = p.integer("count", o.count, 0, 10000000);
     o.radius = p.number("radius", o.radius, 0.0, 1.0);
-    o.isovalue = p.number("isovalue", o.isovalue, 0.02, 1.2);
+    o.isovalue = p.number("isovalue", o.isovalue, 0.05, 1.2);
     o.seed = std::uint64_t(p.integer("seed", int(o.seed), 0, 2147483647));
     p.finish();
     return o;

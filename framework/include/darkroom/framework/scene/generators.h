@@ -36,8 +36,8 @@ namespace generators {
 // The demo's analytic scalar field on [-1,1]^3: a sum of Gaussian blobs (some
 // overlapping, some too weak to reach the default isovalue 0.5 so their maxima
 // float outside the surface) plus a tilted ring whose strength varies as
-// cos(3 angle), giving a torus with three maxima. Below 0.02 on the cube's
-// faces, so every level set above that is closed inside the cube.
+// cos(3 angle), giving a torus with three maxima. Below 0.04 on the cube's
+// faces, so every level set above that is closed inside the cube. Peaks at ~1.07.
 DARKROOM_API double demoField(const Vec3& p);
 DARKROOM_API Vec3 demoFieldGradient(const Vec3& p);
 
