@@ -41,7 +41,7 @@ TEST(CaptureAccuracy, PlaneAtKnownDepthGivesThatDepthAndInfinityElsewhere) {
                 const double margin = 1e-3;
                 const float zz = z[y * 64 + x];
                 if (std::abs(p.x) < 1 - margin && std::abs(p.y) < 1 - margin) {
-                    EXPECT_NEAR(zz, 5.0f, 5.0f * 2e-7f) << toString(cam.projection) << " pixel " << x << "," << y;
+                    EXPECT_EQ(zz, 5.0f) << toString(cam.projection) << " pixel " << x << "," << y;
                     ++inside;
                 } else if (std::abs(p.x) > 1 + margin || std::abs(p.y) > 1 + margin) {
                     EXPECT_EQ(zz, kInf) << toString(cam.projection) << " pixel " << x << "," << y;
@@ -104,7 +104,7 @@ TEST(CaptureAccuracy, WorldPositionsFromDepthMatchHitsOnASphereMesh) {
                 worst = std::max(worst, reconstructionError(cam, x, y, z[i], *t));
                 ++checked;
             }
-        EXPECT_GT(checked, 1500) << toString(cam.projection);
+        EXPECT_GT(checked, 1000) << toString(cam.projection);
         EXPECT_LT(worst, 1e-4) << toString(cam.projection);
     }
 }

@@ -1,0 +1,130 @@
+// The `Capture` node: renders a scene file's camera through a registered
+// backend inside a pipeline, with overrides, and reports bad input clearly.
+#include <darkroom/error.h>
+#include <darkroom/framework/run_filter.h>
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace darkroom::test {
+namespace {
+
+// A 2x2 square facing +z at z = -5, as an OBJ file, and a scene file with two
+// cameras on the z axis looking at it.
+struct SceneFiles {
+    TempDir dir;
+    std::string scene = dir.file("scene.yaml");
+    SceneFiles(double fov = 40.0) {
+        writeText(dir.file("quad.obj"), "v -1 -1 -5\nv 1 -1 -5\nv 1 1 -5\nv -1 1 -5\nf 1 2 3\nf 1 3 4\n");
+        writeScene(fov);
+    }
+    void writeScene(double fov) {
+        writeText(scene, "version: 1\n"
+                         "objects:\n"
+                         "  - file: quad.obj\n"
+                         "cameras:\n"
+                         "  projection: perspective\n"
+                         "  fov: " + std::to_string(fov) + "\n"
+                         "  resolution: [32, 24]\n"
+                         "  list:\n"
+                         "    - {position: [0, 0, 0], target: [0, 0, -5], up: [0, 1, 0]}\n"
+                         "    - {position: [0, 0, 2], target: [0, 0, -5], up: [0, 1, 0]}\n"
+                         "channels:\n"
+                         "  normals: true\n");
+    }
+};
+
+std::unique_ptr<Filter> makeCapture() { return pluginRegistry().createFilter("Capture"); }
+
+BufferPtr run(Filter& f, const std::map<std::string, std::vector<Value>>& inputs) {
+    FilterRunOptions o;
+    o.registry = &pluginRegistry();
+    o.threads = 2;
+    return runFilter(f, inputs, o).outputs.at("image").asImage();
+}
+
+float centre(const BufferPtr& b, const char* channel) {
+    return b->requireFloat(channel)[std::size_t(b->height() / 2) * b->width() + b->width() / 2];
+}
+
+TEST(CaptureFilter, RendersTheChosenCameraOfASceneFile) {
+    SceneFiles files;
+    auto f = makeCapture();
+    ASSERT_TRUE(f);
+    auto first = run(*f, {{"scene", {Value(files.scene)}}});
+    EXPECT_EQ(first->width(), 32);
+    EXPECT_EQ(first->height(), 24);
+    EXPECT_NEAR(centre(first, "Z"), 5.0f, 1e-5f);
+    EXPECT_NEAR(centre(first, "N.z"), 1.0f, 1e-6f);  // the scene file asked for normals
+    EXPECT_EQ(first->requireFloat("Z")[0], std::numeric_limits<float>::infinity());
+    ASSERT_TRUE(first->metadata().camera.has_value());
+    EXPECT_EQ(first->metadata().camera->position, (Vec3{0, 0, 0}));
+
+    // Same instance, other camera: the cached scene renders the new view.
+    auto second = run(*f, {{"scene", {Value(files.scene)}}, {"camera", {Value(1)}}});
+    EXPECT_NEAR(centre(second, "Z"), 7.0f, 1e-5f);
+    EXPECT_EQ(second->metadata().camera->position, (Vec3{0, 0, 2}));
+}
+
+TEST(CaptureFilter, OverridesResolutionAndChannels) {
+    SceneFiles files;
+    auto f = makeCapture();
+    auto b = run(*f, {{"scene", {Value(files.scene)}}, {"width", {Value(10)}}, {"height", {Value(6)}},
+                      {"ids", {Value(true)}}});
+    EXPECT_EQ(b->width(), 10);
+    EXPECT_EQ(b->height(), 6);
+    EXPECT_EQ(b->metadata().camera->width, 10);
+    EXPECT_TRUE(b->hasChannel("objectId"));
+    EXPECT_TRUE(b->hasChannel("primitiveId"));
+    EXPECT_EQ(b->requireUInt("objectId")[3 * 10 + 5], 0u);
+}
+
+TEST(CaptureFilter, PicksUpAnEditedSceneFile) {
+    SceneFiles files(40.0);
+    auto f = makeCapture();
+    auto wide = run(*f, {{"scene", {Value(files.scene)}}});
+    files.writeScene(10.0);
+    // Make sure the modification time differs even on coarse-grained file systems.
+    std::filesystem::last_write_time(files.scene,
+                                     std::filesystem::last_write_time(files.scene) + std::chrono::seconds(2));
+    auto narrow = run(*f, {{"scene", {Value(files.scene)}}});
+    EXPECT_DOUBLE_EQ(narrow->metadata().camera->fovYDegrees, 10.0);
+    // Narrower view: the square covers more pixels.
+    auto covered = [](const BufferPtr& b) {
+        int n = 0;
+        for (std::size_t i = 0; i < b->pixelCount(); ++i) n += std::isfinite(b->requireFloat("Z")[i]);
+        return n;
+    };
+    EXPECT_GT(covered(narrow), covered(wide));
+}
+
+TEST(CaptureFilter, BadInputGivesClearErrors) {
+    SceneFiles files;
+    auto f = makeCapture();
+    try {
+        run(*f, {{"scene", {Value(files.scene)}}, {"camera", {Value(5)}}});
+        FAIL() << "camera 5 does not exist";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("2 cameras"), std::string::npos) << e.what();
+    }
+    try {
+        run(*f, {{"scene", {Value(files.dir.file("missing.yaml"))}}});
+        FAIL() << "a missing scene file must throw";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("missing.yaml"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(run(*f, {}), Error);  // no scene at all
+    try {
+        run(*f, {{"scene", {Value(files.scene)}}, {"backend", {Value("no-such-backend")}}});
+        FAIL() << "an unknown backend must throw";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("no-such-backend"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace darkroom::test
