@@ -126,8 +126,9 @@ private:
                                        rh.hit.u[k],
                                        rh.hit.v[k],
                                        {rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]}};
+                    const float o[3] = {rh.ray.org_x[k], rh.ray.org_y[k], rh.ray.org_z[k]};
                     const float d[3] = {rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]};
-                    writer.hit(pixel, h, d);
+                    writer.hit(pixel, h, o, d);
                 }
             }
         }

@@ -31,7 +31,7 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
 
 GBufferWriter::GBufferWriter(const Scene& scene, const CaptureRequest& request, WritableBuffer& buffer) {
     for (const auto& o : scene.objects)
-        objects_.push_back({o.representation, o.indices.data(),
+        objects_.push_back({o.representation, o.vertices.data(), o.indices.data(),
                             o.primitiveCell.empty() ? nullptr : o.primitiveCell.data()});
     z_ = buffer.requireFloat("Z");
     for (const auto& name : request.scalars) {

@@ -44,13 +44,14 @@ public:
         if (primitiveId_) primitiveId_[pixel] = kNoId;
     }
 
-    // `dir` is the ray direction (for facing the normal towards the camera).
-    // t is planar depth because primary rays are built that way.
-    void hit(std::size_t pixel, const SurfaceHit& h, const float dir[3]) const {
-        z_[pixel] = h.t;
+    // `org` and `dir` are the ray's (dir for facing the normal towards the
+    // camera). t is planar depth because primary rays are built that way.
+    void hit(std::size_t pixel, const SurfaceHit& h, const float org[3], const float dir[3]) const {
+        const ObjectRef& o = objects_[h.geomID];
+        z_[pixel] = refineDepth(o, h, org, dir);
         const std::size_t nObjects = objects_.size();
         for (std::size_t s = 0; s < scalars_.size(); ++s)
-            scalars_[s][pixel] = sample(objects_[h.geomID], fields_[s * nObjects + h.geomID], h);
+            scalars_[s][pixel] = sample(o, fields_[s * nObjects + h.geomID], h);
         if (n_[0]) {
             float nx = h.ng[0], ny = h.ng[1], nz = h.ng[2];
             const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
@@ -70,6 +71,7 @@ private:
 
     struct ObjectRef {
         Representation representation;
+        const float* vertices;  // x, y, z, radius records
         const std::uint32_t* indices;
         const std::uint32_t* primitiveCell;  // nullptr: primitive i is cell i
     };
@@ -77,6 +79,42 @@ private:
         const float* values = nullptr;  // nullptr: the object lacks this field
         bool cell = false;
     };
+
+    // Embree's single-precision t is within a few ulps of the true distance.
+    // Recomputing it in double against the hit triangle's plane or sphere
+    // makes depth correctly rounded (a plane at depth 5 gives exactly 5, and
+    // world positions reconstructed from Z land on the surface). Tubes keep
+    // Embree's value. A refinement that disagrees wildly (grazing rays, where
+    // the plane equation is ill-conditioned) is discarded.
+    static float refineDepth(const ObjectRef& o, const SurfaceHit& h, const float org[3], const float dir[3]) {
+        double t = h.t;
+        const double ox = org[0], oy = org[1], oz = org[2], dx = dir[0], dy = dir[1], dz = dir[2];
+        if (o.representation == Representation::Surface) {
+            const std::uint32_t* i = o.indices + 3 * std::size_t(h.primID);
+            const float* a = o.vertices + 4 * std::size_t(i[0]);
+            const float* b = o.vertices + 4 * std::size_t(i[1]);
+            const float* c = o.vertices + 4 * std::size_t(i[2]);
+            const double e1x = double(b[0]) - a[0], e1y = double(b[1]) - a[1], e1z = double(b[2]) - a[2];
+            const double e2x = double(c[0]) - a[0], e2y = double(c[1]) - a[1], e2z = double(c[2]) - a[2];
+            const double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            const double den = nx * dx + ny * dy + nz * dz;
+            if (den != 0.0) t = (nx * (a[0] - ox) + ny * (a[1] - oy) + nz * (a[2] - oz)) / den;
+        } else if (o.representation == Representation::Points) {
+            const float* c = o.vertices + 4 * std::size_t(h.primID);
+            const double px = ox - c[0], py = oy - c[1], pz = oz - c[2], r = c[3];
+            const double qa = dx * dx + dy * dy + dz * dz, qb = px * dx + py * dy + pz * dz;
+            const double disc = qb * qb - qa * (px * px + py * py + pz * pz - r * r);
+            // Near side when the camera is outside the sphere, far side from inside.
+            if (disc >= 0.0 && qa > 0.0) {
+                const double root = std::sqrt(disc);
+                const double tNear = (-qb - root) / qa;
+                t = tNear > 0.0 ? tNear : (-qb + root) / qa;
+            }
+        }
+        const double embree = h.t;
+        if (!(std::abs(t - embree) <= 1e-3 * embree)) t = embree;
+        return float(t);
+    }
 
     static float sample(const ObjectRef& o, const FieldRef& f, const SurfaceHit& h) {
         if (!f.values) return kNaN;

@@ -148,7 +148,7 @@ TEST(CaptureAccuracy, PointsAreTrueSpheres) {
                     continue;
                 }
                 ++hits;
-                EXPECT_NEAR(z[i], *best, 1e-5 * *best) << toString(cam.projection) << " pixel " << x << "," << y;
+                EXPECT_NEAR(z[i], *best, 1e-6 * *best) << toString(cam.projection) << " pixel " << x << "," << y;
                 EXPECT_EQ(buf->hostUInt("primitiveId")[i], which);
                 const Vec3 nTrue = normalize(o + d * *best - centers[which]);
                 EXPECT_NEAR(nx[i], nTrue.x, 1e-3);
@@ -186,7 +186,7 @@ TEST(CaptureAccuracy, LinesAreRoundTubes) {
                 auto tInner = intersectCylinder(o, d, a, b, r * 0.98);
                 if (!tInner) continue;
                 ++side;
-                EXPECT_NEAR(z[i], *t, 1e-4 * *t) << toString(cam.projection) << " pixel " << x << "," << y;
+                EXPECT_NEAR(z[i], *t, 1e-5 * *t) << toString(cam.projection) << " pixel " << x << "," << y;
                 // Arc-length field interpolated along the segment.
                 EXPECT_NEAR(s[i], axial, 0.03) << "pixel " << x << "," << y;
                 EXPECT_EQ(line[i], 7.0f);
