@@ -22,6 +22,19 @@ std::string errorOf(const std::string& name, const std::map<std::string, std::st
     return {};
 }
 
+// Point data: one value per vertex; cell data: one per cell of primitiveCell,
+// or one per primitive when that map is empty.
+std::size_t expectedFieldSize(const SceneObject& o, const ScalarField& f) {
+    if (f.association == ScalarField::Association::Point) return o.vertexCount();
+    if (!o.primitiveCell.empty()) return *std::max_element(o.primitiveCell.begin(), o.primitiveCell.end()) + 1;
+    switch (o.representation) {
+        case Representation::Surface: return o.indices.size() / 3;
+        case Representation::Lines: return o.indices.size();
+        case Representation::Points: return o.vertexCount();
+    }
+    return 0;
+}
+
 }  // namespace
 
 TEST(Generators, EveryNameWorksWithDefaults) {
@@ -34,14 +47,7 @@ TEST(Generators, EveryNameWorksWithDefaults) {
         for (const auto& o : objects) {
             EXPECT_GT(o.vertexCount(), 0u) << name;
             EXPECT_EQ(o.vertices.size() % 4, 0u);
-            for (const auto& f : o.fields) {
-                const auto expected = f.association == ScalarField::Association::Point
-                                          ? o.vertexCount()
-                                          : (o.primitiveCell.empty() ? o.primitiveCount() : 0);
-                if (expected) {
-                    EXPECT_EQ(f.values.size(), expected) << name << " " << f.name;
-                }
-            }
+            for (const auto& f : o.fields) EXPECT_EQ(f.values.size(), expectedFieldSize(o, f)) << name << " " << f.name;
         }
     }
 }
