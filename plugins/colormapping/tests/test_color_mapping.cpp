@@ -1,0 +1,169 @@
+// ColorMapping through the plugin registry.
+#include "test_support.h"
+
+#include <darkroom/colormap.h>
+#include <darkroom/error.h>
+#include <darkroom/framework/run_filter.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+
+namespace {
+
+using Inputs = std::map<std::string, std::vector<Value>>;
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+FilterRunResult mapImage(const BufferPtr& image, Inputs extra = {}, int threads = 0) {
+    auto f = test::pluginRegistry().createFilter("ColorMapping");
+    extra["image"] = {Value(image)};
+    FilterRunOptions o;
+    o.threads = threads;
+    return runFilter(*f, extra, o);
+}
+
+Color pixel(const Buffer& b, std::size_t i) {
+    return {b.hostFloat("R")[i], b.hostFloat("G")[i], b.hostFloat("B")[i], b.hostFloat("A")[i]};
+}
+
+void expectColor(const Color& got, const Color& want, float tol, const std::string& what) {
+    EXPECT_NEAR(got.r, want.r, tol) << what;
+    EXPECT_NEAR(got.g, want.g, tol) << what;
+    EXPECT_NEAR(got.b, want.b, tol) << what;
+    EXPECT_NEAR(got.a, want.a, tol) << what;
+}
+
+// A ramp from -2 to 6 along x with one NaN pixel.
+std::shared_ptr<WritableBuffer> ramp() {
+    return test::makeImage(9, 3, {"Pressure"}, [](int x, int y, int) {
+        return x == 4 && y == 1 ? kNaN : -2.0f + float(x);
+    });
+}
+
+}  // namespace
+
+TEST(ColorMapping, AutomaticRangeMapsMinimumAndMaximumToTheEnds) {
+    const auto r = mapImage(ramp());
+    const BufferPtr out = r.outputs.at("image").asImage();
+    ASSERT_TRUE(out);
+    EXPECT_EQ(out->channelNames(), (std::vector<std::string>{"R", "G", "B", "A"}));
+    const auto viridis = loadColorMap("viridis");
+    EXPECT_EQ(pixel(*out, 0), viridis.sample(0.0));  // exactly
+    EXPECT_EQ(pixel(*out, 8), viridis.sample(1.0));
+    expectColor(pixel(*out, 2), viridis.sample(0.25), 1e-4f, "quarter");
+    expectColor(pixel(*out, 9 + 4), Color{1, 1, 0, 1}, 0.0f, "NaN takes nanColor");
+    EXPECT_EQ(r.outputs.at("usedMinimum").asFloat(), -2.0);
+    EXPECT_EQ(r.outputs.at("usedMaximum").asFloat(), 6.0);
+}
+
+TEST(ColorMapping, ManualRangeClampsAndCanBeReversed) {
+    const auto m = loadColorMap("magma");
+    const auto r = mapImage(ramp(), {{"range", {Value("manual")}}, {"minimum", {Value(0.0)}},
+                                     {"maximum", {Value(4.0)}}, {"colormap", {Value("magma")}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    EXPECT_EQ(pixel(*out, 0), m.sample(0.0));  // -2 is below the range
+    EXPECT_EQ(pixel(*out, 2), m.sample(0.0));  // 0
+    expectColor(pixel(*out, 3), m.sample(0.25), 1e-4f, "1 of [0, 4]");
+    EXPECT_EQ(pixel(*out, 6), m.sample(1.0));  // 4
+    EXPECT_EQ(pixel(*out, 8), m.sample(1.0));  // 6 is above
+
+    const auto flipped = mapImage(ramp(), {{"range", {Value("manual")}}, {"minimum", {Value(4.0)}},
+                                           {"maximum", {Value(0.0)}}, {"colormap", {Value("magma")}}});
+    EXPECT_EQ(pixel(*flipped.outputs.at("image").asImage(), 2), m.sample(1.0));
+}
+
+TEST(ColorMapping, OnePixelAndConstantImagesUseTheMiddleOfTheMap) {
+    const auto one = test::makeImage(1, 1, {"s"}, [](int, int, int) { return 42.0f; });
+    const auto r = mapImage(one, {{"colormap", {Value("plasma")}}});
+    expectColor(pixel(*r.outputs.at("image").asImage(), 0), loadColorMap("plasma").sample(0.5), 1e-4f, "1x1");
+    EXPECT_EQ(r.outputs.at("usedMinimum").asFloat(), 42.0);
+}
+
+TEST(ColorMapping, AllNanImageIsAllNanColour) {
+    const auto nan = test::makeImage(3, 2, {"s"}, [](int, int, int) { return kNaN; });
+    const Color grey{0.2f, 0.2f, 0.2f, 0.5f};
+    const auto r = mapImage(nan, {{"nanColor", {Value(grey)}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    for (std::size_t i = 0; i < out->pixelCount(); ++i) EXPECT_EQ(pixel(*out, i), grey);
+    EXPECT_TRUE(std::isnan(r.outputs.at("usedMinimum").asFloat()));
+}
+
+TEST(ColorMapping, DepthPassesThroughAndBackgroundIsTransparentAndIgnored) {
+    // Background pixels hold a huge scalar that must not stretch the range.
+    const auto img = test::makeImage(4, 1, {"Z", "T"}, [](int x, int, int c) {
+        if (c == 0) return x == 3 ? kInf : 1.0f + float(x);
+        return x == 3 ? 1e9f : float(x);
+    });
+    const auto r = mapImage(img, {{"opacity", {Value(0.5)}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    EXPECT_EQ(out->channelNames(), (std::vector<std::string>{"R", "G", "B", "A", "Z"}));
+    EXPECT_EQ(r.outputs.at("usedMaximum").asFloat(), 2.0);
+    EXPECT_EQ(pixel(*out, 3), (Color{0, 0, 0, 0}));
+    EXPECT_EQ(pixel(*out, 2).a, 0.5f);
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(out->hostFloat("Z")[x], img->hostFloat("Z")[x]);
+}
+
+TEST(ColorMapping, ChoosesChannelsAndMapsUInt32) {
+    auto img = makeCpuBuffer(3, 1, {{"Z", ChannelType::Float32}, {"id", ChannelType::UInt32},
+                                    {"a", ChannelType::Float32}, {"b", ChannelType::Float32}});
+    for (int x = 0; x < 3; ++x) {
+        img->hostFloat("Z")[x] = 1;
+        img->hostUInt("id")[x] = std::uint32_t(x * 10);
+        img->hostFloat("a")[x] = float(x);
+        img->hostFloat("b")[x] = float(2 - x);
+    }
+    const auto m = loadColorMap("viridis");
+    // Default: the first float channel that is not Z or A -> "a".
+    EXPECT_EQ(pixel(*mapImage(img).outputs.at("image").asImage(), 0), m.sample(0.0));
+    EXPECT_EQ(pixel(*mapImage(img, {{"channel", {Value("b")}}}).outputs.at("image").asImage(), 0), m.sample(1.0));
+    const auto ids = mapImage(img, {{"channel", {Value("id")}}});
+    EXPECT_EQ(pixel(*ids.outputs.at("image").asImage(), 2), m.sample(1.0));
+    EXPECT_EQ(ids.outputs.at("usedMaximum").asFloat(), 20.0);
+    try {
+        mapImage(img, {{"channel", {Value("Elevation")}}});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("'Elevation'"));
+        EXPECT_THAT(e.what(), HasSubstr("id"));
+    }
+}
+
+TEST(ColorMapping, ParaViewFileAndItsNanColour) {
+    const std::string dir = test::sharedData("cinema/ttk_extracts_001.cdb/colormap");
+    if (dir.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto img = ramp();
+    auto f = test::pluginRegistry().createFilter("ColorMapping");
+    FilterRunOptions o;
+    o.inputBase = dir;  // a relative colour-map path is resolved like a pipeline's
+    const auto r = runFilter(*f, {{"image", {Value(BufferPtr(img))}}, {"colormap", {Value("blackbody.json")}},
+                                  {"useMapNanColor", {Value(true)}}}, o);
+    const BufferPtr out = r.outputs.at("image").asImage();
+    const auto bb = loadColorMap(dir + "/blackbody.json");
+    EXPECT_EQ(pixel(*out, 8), bb.sample(1.0));
+    EXPECT_EQ(pixel(*out, 9 + 4), bb.nanColor);
+}
+
+TEST(ColorMapping, MissingColourMapFileIsAnError) {
+    try {
+        mapImage(ramp(), {{"colormap", {Value("/nonexistent/map.json")}}});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("/nonexistent/map.json"));
+    }
+}
+
+TEST(ColorMapping, ResultDoesNotDependOnThreadCount) {
+    const auto big = test::makeImage(301, 257, {"Z", "s"}, [](int x, int y, int c) {
+        if (c == 0) return (x * 7 + y) % 13 == 0 ? kInf : 1.0f;
+        return (x * 31 + y * 17) % 101 == 0 ? kNaN : std::sin(float(x) * 0.05f) * std::cos(float(y) * 0.03f);
+    });
+    const auto one = mapImage(big, {{"colormap", {Value("cool-to-warm")}}}, 1);
+    const auto many = mapImage(big, {{"colormap", {Value("cool-to-warm")}}}, 8);
+    EXPECT_TRUE(identical(*one.outputs.at("image").asImage(), *many.outputs.at("image").asImage()));
+}
