@@ -55,7 +55,7 @@ PortList ColorMapping::ports() const {
     p.enumIn("range", {"automatic", "manual"}, "automatic",
              "automatic: the finite minimum and maximum of the channel over non-background pixels; "
              "manual: minimum and maximum below");
-    const double big = std::numeric_limits<double>::max();
+    const double big = 1e30;  // no practical limit on data values
     p.floatIn("minimum", 0.0, -big, big, "Value mapped to the start of the map (manual range)");
     p.floatIn("maximum", 1.0, -big, big,
               "Value mapped to the end of the map (manual range); below minimum flips the map");
