@@ -247,6 +247,11 @@ bool isColorMapPreset(std::string_view name) { return findPreset(name) != nullpt
 
 ColorMapData loadColorMap(std::string_view spec) {
     if (const detail::Preset* p = findPreset(spec)) return fromPreset(*p);
+    if (spec.empty()) {
+        std::string names;
+        for (const auto& n : colorMapPresets()) names += (names.empty() ? "" : ", ") + n;
+        throw Error("no colour map given; name a preset (" + names + ") or a ParaView colour-map JSON file");
+    }
     return detail::loadParaViewColorMap(std::string(spec));
 }
 

@@ -82,7 +82,7 @@ void ColorMapping::execute(Context& ctx) {
     const int w = in->width(), h = in->height();
 
     const std::string& spec = ctx.getString("colormap");
-    const ColorMapData map = loadColorMap(isColorMapPreset(spec) ? spec : ctx.resolveInputPath(spec));
+    const ColorMapData map = loadColorMap(isColorMapPreset(spec) || spec.empty() ? spec : ctx.resolveInputPath(spec));
     const std::vector<Color> table = map.table(kTableSize);
     const Color nan = ctx.getBool("useMapNanColor") && map.hasNanColor ? map.nanColor : ctx.getColor("nanColor");
     const float alpha = float(ctx.getFloat("opacity"));

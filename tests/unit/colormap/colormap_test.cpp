@@ -185,4 +185,10 @@ TEST(ColorMap, BadFilesAreReportedWithTheFileName) {
                 "Step");
     expectError(writeJson(dir, "none.json", R"([{"Name": "x"}])"), "RGBPoints");
     expectError(writeJson(dir, "scalar.json", "42"), "array");
+    try {
+        loadColorMap("");
+        FAIL() << "no error for an empty name";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("viridis"));
+    }
 }
