@@ -7,6 +7,7 @@
 // The target: capture at least 1.5x faster than the faster plain loop.
 //
 // Usage: bench_capture [--mesh PATH] [--size N] [--threads T] [--reps R] [--camera-json PATH]
+//                      [--shapes] (also time other packet shapes) [--profile METHOD] (for perf record)
 #include "embree_scene.h"
 #include "primary_rays.h"
 
@@ -24,12 +25,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 using namespace darkroom;
@@ -42,6 +45,8 @@ struct Options {
     int threads = 0;
     int reps = 7;
     std::string cameraJson;
+    bool shapes = false;  // also time other packet shapes and sizes
+    std::string profile;  // run only this method 20 times (for perf record)
 };
 
 // ~100k triangles of a bumpy sphere, used when the bunny is not available.
@@ -159,7 +164,12 @@ void plainTiles(Context& ctx, RTCScene scene, const Camera& cam, std::vector<flo
 }
 
 // Packets without the G-buffer: how much of the capture's time is tracing.
+// PW x PH pixel blocks traced as one packet of N = PW * PH rays (8 or 16).
+template <int PW, int PH>
 void packetT(Context& ctx, RTCScene scene, const Camera& cam, std::vector<float>& t) {
+    constexpr int N = PW * PH;
+    static_assert(N == 8 || N == 16);
+    using RayHitN = std::conditional_t<N == 8, RTCRayHit8, RTCRayHit16>;
     const embree::PrimaryRays rays(cam);
     const int tx = (cam.width + kTile - 1) / kTile, ty = (cam.height + kTile - 1) / kTile;
     ctx.parallelFor(0, tx * ty, 1, [&](int b, int e) {
@@ -167,14 +177,14 @@ void packetT(Context& ctx, RTCScene scene, const Camera& cam, std::vector<float>
         RTCIntersectContext ic;
         rtcInitIntersectContext(&ic);
         ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        alignas(32) RTCRayHit8 rh;
-        alignas(32) int valid[8];
+        alignas(64) RayHitN rh;
+        alignas(64) int valid[N];
         for (int tile = b; tile < e; ++tile) {
             const int x0 = (tile % tx) * kTile, y0 = (tile / tx) * kTile;
-            for (int py = y0; py < std::min(y0 + kTile, cam.height); py += 2)
-                for (int px = x0; px < std::min(x0 + kTile, cam.width); px += 4) {
-                    for (int k = 0; k < 8; ++k) {
-                        const int x = px + k % 4, y = py + k / 4;
+            for (int py = y0; py < std::min(y0 + kTile, cam.height); py += PH)
+                for (int px = x0; px < std::min(x0 + kTile, cam.width); px += PW) {
+                    for (int k = 0; k < N; ++k) {
+                        const int x = px + k % PW, y = py + k / PW;
                         valid[k] = (x < cam.width && y < cam.height) ? -1 : 0;
                         float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
                         if (valid[k]) rays(x, y, o, d);
@@ -189,10 +199,11 @@ void packetT(Context& ctx, RTCScene scene, const Camera& cam, std::vector<float>
                         rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                         rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                     }
-                    rtcIntersect8(valid, scene, &ic, &rh);
-                    for (int k = 0; k < 8; ++k)
+                    if constexpr (N == 8) rtcIntersect8(valid, scene, &ic, &rh);
+                    else rtcIntersect16(valid, scene, &ic, &rh);
+                    for (int k = 0; k < N; ++k)
                         if (valid[k])
-                            t[std::size_t(py + k / 4) * cam.width + px + k % 4] =
+                            t[std::size_t(py + k / PW) * cam.width + px + k % PW] =
                                 rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
                                                                             : rh.ray.tfar[k];
                 }
@@ -200,11 +211,32 @@ void packetT(Context& ctx, RTCScene scene, const Camera& cam, std::vector<float>
     });
 }
 
+// Wall-clock seconds of f(); also adds the process's CPU seconds to *cpu.
+// On a shared, loaded machine CPU time is the steadier measure of the work
+// done (wall time also counts time other processes held our cores).
+std::vector<double>* cpuSink = nullptr;
+double processCpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
 double seconds(const std::function<void()>& f) {
+    const double c0 = processCpu();
     const auto t0 = std::chrono::steady_clock::now();
     f();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (cpuSink) cpuSink->push_back(processCpu() - c0);
+    return wall;
 }
+
+struct Timings {
+    std::vector<double> wall, cpu;
+    void run(const std::function<void()>& f) {
+        cpuSink = &cpu;
+        wall.push_back(seconds(f));
+        cpuSink = nullptr;
+    }
+};
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -238,8 +270,10 @@ int main(int argc, char** argv) {
         else if (a == "--threads") opt.threads = std::stoi(next());
         else if (a == "--reps") opt.reps = std::max(1, std::stoi(next()));
         else if (a == "--camera-json") opt.cameraJson = next();
+        else if (a == "--profile") opt.profile = next();
+        else if (a == "--shapes") opt.shapes = true;
         else {
-            std::fprintf(stderr, "usage: %s [--mesh PATH] [--size N] [--threads T] [--reps R] [--camera-json PATH]\n",
+            std::fprintf(stderr, "usage: %s [--mesh PATH] [--size N] [--threads T] [--reps R] [--camera-json PATH] [--shapes] [--profile METHOD]\n",
                          argv[0]);
             return 2;
         }
@@ -269,16 +303,34 @@ int main(int argc, char** argv) {
         req.scalars = {"height"};
         req.normals = true;
         std::vector<float> t(std::size_t(cam.width) * cam.height);
-        std::vector<double> rows, tiles, packets, cap;
+        Timings rows, tiles, packets, cap, capZ, alloc, p8x1, p2x4, p4x4, p8x2;
         BufferPtr image;
+        if (!opt.profile.empty()) {
+            for (int r = 0; r < 20; ++r) {
+                if (opt.profile == "capture") backend->render(cam, req, *ctx);
+                else if (opt.profile == "capture-Z") backend->render(cam, CaptureRequest{}, *ctx);
+                else if (opt.profile == "packet-t") packetT<4, 2>(*ctx, bvh.handle(), cam, t);
+                else if (opt.profile == "plain-rows") plainRows(*ctx, bvh.handle(), cam, t);
+                else throw Error("--profile: unknown method '" + opt.profile + "'");
+            }
+            return 0;
+        }
         // Warm-up, then interleaved repetitions so background load hits all alike.
         plainRows(*ctx, bvh.handle(), cam, t);
         image = backend->render(cam, req, *ctx);
         for (int r = 0; r < opt.reps; ++r) {
-            rows.push_back(seconds([&] { plainRows(*ctx, bvh.handle(), cam, t); }));
-            tiles.push_back(seconds([&] { plainTiles(*ctx, bvh.handle(), cam, t); }));
-            packets.push_back(seconds([&] { packetT(*ctx, bvh.handle(), cam, t); }));
-            cap.push_back(seconds([&] { image = backend->render(cam, req, *ctx); }));
+            rows.run(([&] { plainRows(*ctx, bvh.handle(), cam, t); }));
+            tiles.run(([&] { plainTiles(*ctx, bvh.handle(), cam, t); }));
+            packets.run(([&] { packetT<4, 2>(*ctx, bvh.handle(), cam, t); }));
+            if (opt.shapes) {
+                p8x1.run(([&] { packetT<8, 1>(*ctx, bvh.handle(), cam, t); }));
+                p2x4.run(([&] { packetT<2, 4>(*ctx, bvh.handle(), cam, t); }));
+                p4x4.run(([&] { packetT<4, 4>(*ctx, bvh.handle(), cam, t); }));
+                p8x2.run(([&] { packetT<8, 2>(*ctx, bvh.handle(), cam, t); }));
+            }
+            cap.run(([&] { image = backend->render(cam, req, *ctx); }));
+            capZ.run(([&] { backend->render(cam, CaptureRequest{}, *ctx); }));
+            alloc.run(([&] { ctx->allocate(cam.width, cam.height, {{"Z"}, {"height"}, {"N.x"}, {"N.y"}, {"N.z"}}); }));
         }
         // Sanity: the capture's depth is the plain loop's t.
         plainRows(*ctx, bvh.handle(), cam, t);
@@ -292,28 +344,43 @@ int main(int argc, char** argv) {
 
         const double rays = double(cam.width) * cam.height;
         const double bytes = double(image->channels().size()) * 4.0 * rays;
-        auto report = [&](const char* name, const std::vector<double>& v, double mb) {
-            const double s = median(v);
-            std::printf("%-12s %8.2f ms  %8.2f Mrays/s", name, s * 1e3, rays / s * 1e-6);
-            if (mb > 0) std::printf("  %8.1f MB/s G-buffer", mb / s * 1e-6);
+        // Wall time (what a user waits) and process CPU time (the work done,
+        // robust to other processes sharing the cores) per frame, medians.
+        auto report = [&](const char* name, const Timings& v, double mb) {
+            const double s = median(v.wall), c = median(v.cpu);
+            std::printf("%-12s wall %8.2f ms %7.2f Mrays/s | cpu %8.2f ms %7.2f Mrays/s per core-second", name,
+                        s * 1e3, rays / s * 1e-6, c * 1e3, rays / c * 1e-6);
+            if (mb > 0) std::printf(" | %7.1f MB/s G-buffer (wall)", mb / s * 1e-6);
             std::printf("\n");
-            return s;
+            return std::make_pair(s, c);
         };
         std::printf("mesh: %s, %zu triangles, %dx%d, %d threads, %d reps (median), %.1f%% pixels hit\n",
                     label.c_str(), scene->objects[0].indices.size() / 3, cam.width, cam.height, threads, opt.reps,
                     100.0 * hits / rays);
         std::printf("BVH build (backend setScene): %.1f ms\n", tBuild * 1e3);
-        const double sRows = report("plain-rows", rows, 0);
-        const double sTiles = report("plain-tiles", tiles, 0);
-        const double sPackets = report("packet-t", packets, 0);
-        const double sCap = report("capture", cap, bytes);
+        const auto sRows = report("plain-rows", rows, 0);
+        const auto sTiles = report("plain-tiles", tiles, 0);
+        const auto sPackets = report("packet 4x2", packets, 0);
+        if (opt.shapes) {
+            report("packet 8x1", p8x1, 0);
+            report("packet 2x4", p2x4, 0);
+            report("packet 4x4", p4x4, 0);
+            report("packet 8x2", p8x2, 0);
+        }
+        const auto sCap = report("capture", cap, bytes);
+        report("capture-Z", capZ, 4.0 * rays);
+        std::printf("allocate     wall %8.2f ms  (ctx.allocate of the 5-channel G-buffer alone)\n", median(alloc.wall) * 1e3);
         std::printf("G-buffer: %zu channels (Z, height, N.x, N.y, N.z), %.1f MB\n", image->channels().size(),
                     bytes * 1e-6);
-        const double plain = std::min(sRows, sTiles);
-        std::printf("ratio capture / plain (best of rows, tiles): %.2fx faster\n", plain / sCap);
-        std::printf("ratio packet-t / plain: %.2fx faster\n", plain / sPackets);
+        const double plain = std::min(sRows.first, sTiles.first);
+        const double plainCpu = std::min(sRows.second, sTiles.second);
+        std::printf("speed-up capture vs plain loop (best of rows, tiles): wall %.2fx, cpu %.2fx\n",
+                    plain / sCap.first, plainCpu / sCap.second);
+        std::printf("speed-up packet 4x2 (t only) vs plain loop:          wall %.2fx, cpu %.2fx\n",
+                    plain / sPackets.first, plainCpu / sPackets.second);
         std::printf("depth mismatches capture vs plain: %zu\n", mismatches);
-        std::printf("RESULT capture_ms=%.3f plain_ms=%.3f ratio=%.3f\n", sCap * 1e3, plain * 1e3, plain / sCap);
+        std::printf("RESULT capture_ms=%.3f plain_ms=%.3f ratio=%.3f cpu_ratio=%.3f\n", sCap.first * 1e3, plain * 1e3,
+                    plain / sCap.first, plainCpu / sCap.second);
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_capture: %s\n", e.what());

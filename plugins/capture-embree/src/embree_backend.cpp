@@ -112,6 +112,9 @@ private:
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
                 rtcIntersect8(valid, scene, ic, &rh);
+                for (int k = 0; k < 8; ++k)
+                    if (valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
+                        writer.prefetch(SurfaceHit{0.0f, rh.hit.geomID[k], rh.hit.primID[k], 0.0f, 0.0f, {}});
                 for (int k = 0; k < 8; ++k) {
                     if (!valid[k]) continue;
                     const std::size_t pixel =
