@@ -10,9 +10,9 @@ build=${1:-$here/../../build}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-"$build/bench/capture/bench_capture" --camera-json "$tmp/camera.json" "$@" | tee "$tmp/capture.txt"
+"$build/bin/bench_capture" --camera-json "$tmp/camera.json" "$@" | tee "$tmp/capture.txt"
 echo
-xvfb-run -a -s "-screen 0 1920x1200x24" python3 "$here/vtk_peer.py" --camera "$tmp/camera.json" | tee "$tmp/vtk.txt"
+xvfb-run -a -s "-screen 0 1920x1200x24" /usr/bin/python3 "$here/vtk_peer.py" --camera "$tmp/camera.json" | tee "$tmp/vtk.txt"
 echo
 cap=$(sed -n 's/^RESULT capture_ms=\([0-9.]*\).*/\1/p' "$tmp/capture.txt")
 vtk=$(sed -n 's/^RESULT vtk_ms=\([0-9.]*\).*/\1/p' "$tmp/vtk.txt")

@@ -1,10 +1,10 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Peer for the capture benchmark: renders the same mesh, with the same camera
 and resolution as bench_capture, with VTK 9.1 (Debian's python3-vtk9) and reads
 back the z-buffer, as ttkCinemaImaging-style capture does.
 
 Run offscreen under Xvfb:
-    xvfb-run -a python3 vtk_peer.py --camera camera.json [--reps 7]
+    xvfb-run -a /usr/bin/python3 vtk_peer.py   (Debian's interpreter, where python3-vtk9 lives) --camera camera.json [--reps 7]
 camera.json is written by `bench_capture --camera-json camera.json`.
 Prints per-frame times for render alone and render + z-buffer read-back.
 """
