@@ -81,6 +81,8 @@ TEST(Generators, BadParametersNameGeneratorKeyAndExpectation) {
     EXPECT_THAT(errorOf("streamlines", {{"step", ""}}), HasSubstr("must be a number"));
     EXPECT_THAT(errorOf("streamlines", {{"direction", "sideways"}}),
                 AllOf(HasSubstr("'direction'"), HasSubstr("forward, backward, both")));
+    EXPECT_THAT(errorOf("streamlines", {{"length", "1000"}, {"step", "0.0001"}}),
+                AllOf(HasSubstr("'length'"), HasSubstr("more than 1000000")));
     EXPECT_THAT(errorOf("particles", {{"count", "-1"}}), AllOf(HasSubstr("particles"), HasSubstr("'count'")));
     EXPECT_THAT(errorOf("particles", {{"radius", "nan"}}), HasSubstr("'radius'"));
     EXPECT_THAT(errorOf("maxima", {{"radius", "-0.1"}}), AllOf(HasSubstr("maxima"), HasSubstr("'radius'")));

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 namespace darkroom::generators {
 namespace {
 
@@ -64,7 +66,11 @@ StreamlineOptions readStreamlineOptions(GeneratorParams& p) {
     if (p.has("steps") && p.has("length"))
         p.fail("steps", "cannot be combined with 'length' (give the integration time or the step count)");
     o.steps = p.integer("steps", o.steps, 1, 1000000);
-    if (p.has("length")) o.steps = int(std::ceil(p.number("length", 10, 1e-3, 1e5) / o.step - 1e-9));
+    if (p.has("length")) {
+        const double steps = std::ceil(p.number("length", 10, 1e-3, 1e5) / o.step - 1e-9);
+        if (steps > 1e6) p.fail("length", fmt::format("gives {} steps of {}, more than 1000000", steps, o.step));
+        o.steps = int(steps);
+    }
     o.radius = p.number("radius", o.radius, 0.0, 1.0);
     o.a = p.number("A", o.a, -100, 100);
     o.b = p.number("B", o.b, -100, 100);
