@@ -66,7 +66,7 @@ private:
 
     void readHeader() {
         const std::string_view magic = cur_.restOfLine();
-        if (magic != "ply") cur_.fail("missing PLY header: expected 'ply' on the first line");
+        if (magic != "ply") throw Error(path_ + ":1: missing PLY header: expected 'ply' on the first line");
         bool sawFormat = false;
         for (;;) {
             if (cur_.atEnd()) cur_.fail("unexpected end of file in the PLY header, expected 'end_header'");

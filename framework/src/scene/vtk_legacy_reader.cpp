@@ -58,7 +58,7 @@ private:
 
     void readHeader() {
         const std::string_view first = cur_.restOfLine();
-        if (first.substr(0, 5) != "# vtk") cur_.fail("missing VTK header: expected '# vtk DataFile Version x.x' on the first line");
+        if (first.substr(0, 5) != "# vtk") throw Error(path_ + ":1: " + "missing VTK header: expected '# vtk DataFile Version x.x' on the first line");
         cur_.restOfLine();  // title
         line_ = cur_.line();
         const auto fmt = mesh::splitBlanks(cur_.restOfLine());
@@ -125,6 +125,7 @@ private:
             line_ = cur_.line() - 1;
             if (next.size() != 2 || a == 0) failLine("expected 'OFFSETS <type>' with at least one offset");
             const auto off = values(a, type(next[1]), what + " OFFSETS");
+            cur_.atEnd();  // step over the newline after the last offset
             line_ = cur_.line();
             const auto conn_h = mesh::splitBlanks(cur_.restOfLine());
             if (conn_h.size() != 2 || conn_h[0] != "CONNECTIVITY") failLine("expected 'CONNECTIVITY <type>' after OFFSETS");

@@ -2,6 +2,7 @@
 // The capture scene file (YAML): objects (from mesh files or generators, each
 // drawn as surface, lines or points, with the scalar fields to keep), cameras
 // (a phi/theta grid or an explicit list) and the channels to store.
+// Format and conventions: docs/scene-format.md.
 #include <darkroom/camera.h>
 #include <darkroom/capture_backend.h>
 #include <darkroom/export.h>
@@ -27,6 +28,7 @@ struct SceneDescription {
     std::vector<CameraSample> cameras;
     CaptureRequest request;
     std::string backend = "embree";
+    std::vector<std::string> warnings;  // e.g. cells a reader skipped
 };
 
 // Parses the scene file and loads every object it names. Throws darkroom::Error
@@ -34,5 +36,24 @@ struct SceneDescription {
 DARKROOM_API SceneDescription loadSceneFile(const std::string& path);
 DARKROOM_API SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName,
                                              const std::string& baseDir);
+
+// The Cinema/ParaView orbit: the camera sits at `distance` from `target` in
+// direction cos(theta)(cos(phi) F + sin(phi) R) + sin(theta) U, where U is the
+// unit `up`, F the reference front (X x U, i.e. +Z for up +Y, -Y for up +Z) and
+// R = U x F (+X for up +Y); phi = azimuth about U, theta = elevation, degrees.
+// The camera looks at the target; its up is the elevation-rotated U, so the
+// poles (theta = +-90) are well defined. Resolution and projection are copied
+// from `prototype`.
+DARKROOM_API Camera orbitCamera(const Camera& prototype, const Vec3& target, double distance, double phiDegrees,
+                                double thetaDegrees, const Vec3& up);
+
+// Grid angles for a count: phi -180 + 360 i / n (i < n); theta 0 for one
+// sample, else -90 + 180 i / (n - 1) (both poles included).
+DARKROOM_API std::vector<double> phiAngles(int count);
+DARKROOM_API std::vector<double> thetaAngles(int count);
+
+// Distance at which a sphere of `radius` just fills the prototype's view
+// (perspective: tangent to the narrower field of view; orthographic: 2 radius).
+DARKROOM_API double fittingDistance(const Camera& prototype, double radius);
 
 }  // namespace darkroom

@@ -1,0 +1,355 @@
+// The capture scene file: YAML in, SceneDescription out. Every problem is a
+// darkroom::Error at "scene.yaml:line:column" (1-based); reader and generator
+// errors are prefixed with the object that asked for them.
+#include "object_style.h"
+#include "text_cursor.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/scene/generators.h>
+#include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/framework/scene/scene_file.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+
+namespace darkroom {
+namespace {
+
+class Parser {
+public:
+    Parser(std::string source, std::string baseDir) : source_(std::move(source)), baseDir_(std::move(baseDir)) {}
+
+    SceneDescription parse(const YAML::Node& root) {
+        SceneDescription d;
+        d.path = source_;
+        d.scene = std::make_shared<Scene>();
+        if (!root.IsMap()) fail(root, "expected a map with 'objects', 'cameras' and 'channels'");
+        checkKeys(root, {"version", "objects", "cameras", "channels", "backend"}, "the scene file");
+        if (root["version"] && number(root["version"], "version") != 1.0) fail(root["version"], "unsupported version, expected 1");
+        const YAML::Node objects = root["objects"];
+        if (!objects) fail(root, "missing 'objects' (a list of objects to draw)");
+        if (!objects.IsSequence() || objects.size() == 0) fail(objects, "'objects' must be a non-empty list");
+        for (const auto& o : objects) loadObject(o, *d.scene, d.warnings);
+        defaultRadii(*d.scene);
+        if (root["backend"]) d.backend = text(root["backend"], "backend");
+        d.request = channels(root["channels"], *d.scene, root);
+        d.cameras = cameras(root["cameras"], *d.scene);
+        return d;
+    }
+
+private:
+    std::string where(const YAML::Node& n) const {
+        const YAML::Mark m = n.Mark();
+        if (m.line < 0) return source_;
+        return source_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+    }
+    [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const { throw Error(where(n) + ": " + what); }
+
+    void checkKeys(const YAML::Node& map, std::initializer_list<const char*> allowed, const std::string& what) const {
+        for (const auto& kv : map) {
+            const std::string key = kv.first.Scalar();
+            if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
+                std::string list;
+                for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+                fail(kv.first, "unknown key '" + key + "' in " + what + " (expected " + list + ")");
+            }
+        }
+    }
+
+    std::string text(const YAML::Node& n, const std::string& what) const {
+        if (!n.IsScalar()) fail(n, what + " must be a single value");
+        return n.Scalar();
+    }
+    double number(const YAML::Node& n, const std::string& what) const {
+        double v = 0;
+        if (!n.IsScalar() || !mesh::parseDouble(n.Scalar(), v) || !std::isfinite(v))
+            fail(n, what + " must be a number" + (n.IsScalar() ? ", got '" + n.Scalar() + "'" : ""));
+        return v;
+    }
+    int integer(const YAML::Node& n, const std::string& what, long long lo, long long hi) const {
+        long long v = 0;
+        if (!n.IsScalar() || !mesh::parseInteger(n.Scalar(), v) || v < lo || v > hi)
+            fail(n, what + " must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                        (n.IsScalar() ? ", got '" + n.Scalar() + "'" : ""));
+        return int(v);
+    }
+    bool boolean(const YAML::Node& n, const std::string& what) const {
+        const std::string s = n.IsScalar() ? n.Scalar() : std::string();
+        if (s == "true" || s == "yes" || s == "on") return true;
+        if (s == "false" || s == "no" || s == "off") return false;
+        fail(n, what + " must be true or false");
+    }
+    Vec3 vec3(const YAML::Node& n, const std::string& what) const {
+        if (!n.IsSequence() || n.size() != 3) fail(n, what + " must be a list of 3 numbers [x, y, z]");
+        return {number(n[0], what), number(n[1], what), number(n[2], what)};
+    }
+    std::vector<std::string> names(const YAML::Node& n, const std::string& what) const {
+        if (!n.IsSequence()) fail(n, what + " must be a list of names");
+        std::vector<std::string> out;
+        for (const auto& x : n) out.push_back(text(x, what));
+        return out;
+    }
+
+    std::vector<SceneObject> loadParts(const YAML::Node& o, const std::string& name, std::vector<std::string>& warnings) const {
+        const bool hasFile = bool(o["file"]), hasGenerator = bool(o["generator"]);
+        if (hasFile == hasGenerator) fail(o, "object '" + name + "' needs exactly one of 'file' or 'generator'");
+        if (o["parameters"] && !hasGenerator) fail(o["parameters"], "'parameters' only apply to a 'generator' object");
+        try {
+            if (hasFile) {
+                std::filesystem::path p = text(o["file"], "file");
+                if (p.is_relative()) p = std::filesystem::path(baseDir_) / p;
+                return readMesh(p.lexically_normal().string(), &warnings);
+            }
+            std::map<std::string, std::string> params;
+            if (const YAML::Node ps = o["parameters"]) {
+                if (!ps.IsMap()) fail(ps, "'parameters' must be a map of name: value");
+                for (const auto& kv : ps) {
+                    std::string v;
+                    if (kv.second.IsSequence())  // lists are passed on as "a,b,c"
+                        for (const auto& x : kv.second) v += (v.empty() ? "" : ",") + text(x, "a parameter value");
+                    else
+                        v = text(kv.second, "parameter '" + kv.first.Scalar() + "'");
+                    params[kv.first.Scalar()] = v;
+                }
+            }
+            return generate(text(o["generator"], "generator"), params);
+        } catch (const Error& e) {
+            const YAML::Node at = hasFile ? o["file"] : o["generator"];
+            const std::string msg = e.what();
+            if (msg.rfind(source_ + ":", 0) == 0) throw;  // already located in this file
+            fail(at, "object '" + name + "': " + msg);
+        }
+    }
+
+    void loadObject(const YAML::Node& o, Scene& scene, std::vector<std::string>& warnings) {
+        if (!o.IsMap()) fail(o, "each object must be a map (with 'file' or 'generator')");
+        checkKeys(o, {"name", "file", "generator", "parameters", "representation", "radius", "fields", "translate", "scale"},
+                  "an object");
+        std::string name;
+        if (o["name"]) name = text(o["name"], "name");
+        else if (o["file"]) name = std::filesystem::path(text(o["file"], "file")).stem().string();
+        else if (o["generator"]) name = text(o["generator"], "generator");
+        std::vector<SceneObject> parts = loadParts(o, name, warnings);
+
+        Vec3 scale{1, 1, 1}, translate{0, 0, 0};
+        if (const YAML::Node s = o["scale"]) {
+            if (s.IsSequence()) scale = vec3(s, "scale");
+            else scale = Vec3{1, 1, 1} * number(s, "scale");
+        }
+        if (o["translate"]) translate = vec3(o["translate"], "translate");
+
+        std::optional<Representation> rep;
+        if (const YAML::Node r = o["representation"]) {
+            const std::string s = text(r, "representation");
+            if (s == "surface") rep = Representation::Surface;
+            else if (s == "lines") rep = Representation::Lines;
+            else if (s == "points") rep = Representation::Points;
+            else fail(r, "representation must be surface, lines or points, got '" + s + "'");
+        }
+        std::optional<float> radius;
+        if (const YAML::Node r = o["radius"]) {
+            const double v = number(r, "radius");
+            if (!(v > 0)) fail(r, "radius must be positive (world units)");
+            radius = float(v);
+        }
+        if (const YAML::Node f = o["fields"]) {
+            const std::vector<std::string> wanted = names(f, "fields");
+            std::vector<std::string> available;
+            for (const auto& p : parts)
+                for (const auto& fl : p.fields)
+                    if (std::find(available.begin(), available.end(), fl.name) == available.end()) available.push_back(fl.name);
+            for (std::size_t i = 0; i < wanted.size(); ++i) {
+                if (std::find(available.begin(), available.end(), wanted[i]) != available.end()) continue;
+                std::string list;
+                for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
+                fail(f[i], "object '" + name + "' has no field '" + wanted[i] + "' (" +
+                               (available.empty() ? std::string("it has no fields") : "available: " + list) + ")");
+            }
+            for (auto& p : parts) scenefile::keepFields(p, wanted);
+        }
+        for (auto& p : parts) {
+            if (parts.size() > 1 && o["name"]) p.name = name + p.name.substr(p.name.rfind('/'));
+            else if (o["name"]) p.name = name;
+            scenefile::transform(p, scale, translate);
+            if (rep) p = scenefile::restyle(std::move(p), *rep);
+            if (radius) scenefile::setRadius(p, *radius);
+            scene.objects.push_back(std::move(p));
+        }
+    }
+
+    // Lines and points read from files carry radius 0: give them 0.5% of the
+    // scene's bounding radius unless the scene file set one.
+    static void defaultRadii(Scene& scene) {
+        const double r = scene.bounds().radius();
+        const float fallback = float(r > 0 ? 0.005 * r : 0.01);
+        for (auto& o : scene.objects) {
+            if (o.representation == Representation::Surface) continue;
+            bool zero = true;
+            for (std::size_t i = 3; zero && i < o.vertices.size(); i += 4) zero = o.vertices[i] == 0.f;
+            if (zero) scenefile::setRadius(o, fallback);
+        }
+    }
+
+    CaptureRequest channels(const YAML::Node& n, const Scene& scene, const YAML::Node& root) const {
+        CaptureRequest req;
+        std::vector<std::string> available;
+        for (const auto& o : scene.objects)
+            for (const auto& f : o.fields)
+                if (std::find(available.begin(), available.end(), f.name) == available.end()) available.push_back(f.name);
+        req.scalars = available;
+        if (!n) return req;
+        if (!n.IsMap()) fail(n, "'channels' must be a map (scalars, normals, objectId, primitiveId)");
+        checkKeys(n, {"scalars", "normals", "objectId", "primitiveId"}, "channels");
+        if (const YAML::Node s = n["scalars"]) {
+            req.scalars = names(s, "scalars");
+            for (std::size_t i = 0; i < req.scalars.size(); ++i)
+                if (std::find(available.begin(), available.end(), req.scalars[i]) == available.end()) {
+                    std::string list;
+                    for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
+                    fail(s[i], "no object carries the field '" + req.scalars[i] + "' (" +
+                                   (available.empty() ? std::string("the objects keep no fields") : "kept fields: " + list) + ")");
+                }
+        }
+        if (n["normals"]) req.normals = boolean(n["normals"], "normals");
+        if (n["objectId"]) req.objectId = boolean(n["objectId"], "objectId");
+        if (n["primitiveId"]) req.primitiveId = boolean(n["primitiveId"], "primitiveId");
+        (void)root;
+        return req;
+    }
+
+    std::vector<double> angles(const YAML::Node& n, const char* what, double lo, double hi, bool phi) const {
+        if (n.IsScalar()) {
+            const int count = integer(n, std::string(what) + " (a count)", 1, 3600);
+            return phi ? phiAngles(count) : thetaAngles(count);
+        }
+        if (!n.IsSequence() || n.size() == 0) fail(n, std::string(what) + " must be a count or a non-empty list of angles in degrees");
+        std::vector<double> a;
+        for (const auto& x : n) {
+            const double v = number(x, std::string(what) + " angle");
+            if (v < lo || v > hi) fail(x, std::string(what) + " angles must lie in [" + std::to_string(int(lo)) + ", " + std::to_string(int(hi)) + "]");
+            a.push_back(v);
+        }
+        return a;
+    }
+
+    std::vector<CameraSample> cameras(const YAML::Node& n, const Scene& scene) const {
+        Camera proto;
+        proto.width = proto.height = 512;
+        proto.fovYDegrees = 30.0;
+        const Bounds b = scene.bounds();
+        const double radius = b.empty() || b.radius() <= 0 ? 1.0 : b.radius();
+        const Vec3 center = b.empty() ? Vec3{} : b.center();
+        if (n) {
+            if (!n.IsMap()) fail(n, "'cameras' must be a map (projection, fov, height, resolution, grid or list)");
+            checkKeys(n, {"projection", "fov", "height", "resolution", "grid", "list"}, "cameras");
+            if (const YAML::Node p = n["projection"]) {
+                const std::string s = text(p, "projection");
+                if (s == "perspective") proto.projection = Camera::Projection::Perspective;
+                else if (s == "orthographic") proto.projection = Camera::Projection::Orthographic;
+                else fail(p, "projection must be perspective or orthographic, got '" + s + "'");
+            }
+            if (const YAML::Node f = n["fov"]) {
+                proto.fovYDegrees = number(f, "fov");
+                if (!(proto.fovYDegrees > 0 && proto.fovYDegrees < 180)) fail(f, "fov must be in (0, 180) degrees");
+            }
+            if (const YAML::Node r = n["resolution"]) {
+                if (!r.IsSequence() || r.size() != 2) fail(r, "resolution must be [width, height]");
+                proto.width = integer(r[0], "width", 1, 65536);
+                proto.height = integer(r[1], "height", 1, 65536);
+            }
+            // Orthographic: by default the bounding sphere fits the narrower side.
+            proto.viewHeight = 2.0 * radius * std::max(1.0, double(proto.height) / proto.width);
+            if (const YAML::Node h = n["height"]) {
+                proto.viewHeight = number(h, "height");
+                if (!(proto.viewHeight > 0)) fail(h, "height must be positive (world units)");
+            }
+            if (n["grid"] && n["list"]) fail(n, "give either 'grid' or 'list' cameras, not both");
+            if (n["list"]) return cameraList(n["list"], proto, center);
+        } else {
+            proto.viewHeight = 2.0 * radius;
+        }
+        if (n && n["grid"]) return cameraGrid(n["grid"], proto, center, radius);
+        return cameraGrid(std::nullopt, proto, center, radius);
+    }
+
+    // `grid` absent: 8 azimuths on the equator.
+    std::vector<CameraSample> cameraGrid(const std::optional<YAML::Node>& grid, const Camera& proto, Vec3 target,
+                                         double radius) const {
+        std::vector<double> phis = phiAngles(8), thetas = thetaAngles(1);
+        Vec3 up{0, 1, 0};
+        double distance = fittingDistance(proto, radius);
+        if (grid) {
+            const YAML::Node& g = *grid;
+            if (!g.IsMap()) fail(g, "'grid' must be a map (phi, theta, distance, up, target)");
+            checkKeys(g, {"phi", "theta", "distance", "up", "target"}, "grid");
+            if (g["phi"]) phis = angles(g["phi"], "phi", -360, 360, true);
+            if (g["theta"]) thetas = angles(g["theta"], "theta", -90, 90, false);
+            if (g["up"]) {
+                up = vec3(g["up"], "up");
+                if (length(up) == 0) fail(g["up"], "up must not be zero");
+            }
+            if (g["target"]) target = vec3(g["target"], "target");
+            if (g["distance"]) {
+                distance = number(g["distance"], "distance");
+                if (!(distance > 0)) fail(g["distance"], "distance must be positive");
+            }
+        }
+        std::vector<CameraSample> out;
+        for (double phi : phis)
+            for (double theta : thetas)
+                out.push_back({{{"phi", phi}, {"theta", theta}}, orbitCamera(proto, target, distance, phi, theta, up)});
+        return out;
+    }
+
+    std::vector<CameraSample> cameraList(const YAML::Node& l, const Camera& proto, const Vec3& center) const {
+        if (!l.IsSequence() || l.size() == 0) fail(l, "'list' must be a non-empty list of {position, target or forward, up}");
+        std::vector<CameraSample> out;
+        for (std::size_t i = 0; i < l.size(); ++i) {
+            const YAML::Node c = l[i];
+            if (!c.IsMap()) fail(c, "each camera must be a map {position, target or forward, up}");
+            checkKeys(c, {"position", "target", "forward", "up"}, "a camera");
+            if (!c["position"]) fail(c, "camera " + std::to_string(i) + " needs a 'position'");
+            if (c["target"] && c["forward"]) fail(c, "give either 'target' or 'forward', not both");
+            Camera cam = proto;
+            cam.position = vec3(c["position"], "position");
+            const Vec3 target = c["target"] ? vec3(c["target"], "target") : center;
+            cam.forward = c["forward"] ? vec3(c["forward"], "forward") : target - cam.position;
+            if (length(cam.forward) == 0) fail(c, "camera " + std::to_string(i) + " looks nowhere (target equals position or forward is zero)");
+            cam.forward = normalize(cam.forward);
+            if (c["up"]) cam.up = vec3(c["up"], "up");
+            if (length(cross(cam.forward, cam.up)) < 1e-9)
+                fail(c["up"] ? c["up"] : c, "camera " + std::to_string(i) + ": up must not be parallel to the view direction");
+            out.push_back({{{"camera", double(i)}}, cam});
+        }
+        return out;
+    }
+
+    std::string source_, baseDir_;
+};
+
+}  // namespace
+
+SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir) {
+    YAML::Node root;
+    try {
+        root = YAML::Load(yamlText);
+    } catch (const YAML::Exception& e) {
+        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+    }
+    try {
+        return Parser(sourceName, baseDir).parse(root);
+    } catch (const YAML::Exception& e) {
+        // A conversion yaml-cpp itself refused (should be rare: values are parsed here).
+        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+    }
+}
+
+SceneDescription loadSceneFile(const std::string& path) {
+    const std::string text = mesh::readWholeFile(path);
+    return parseSceneFile(text, path, std::filesystem::path(path).parent_path().string());
+}
+
+}  // namespace darkroom
