@@ -53,8 +53,11 @@ bool parseCsvNumber(std::string_view text, double& out) {
                                            std::chars_format::general);
     if (ptr != body.data() + body.size()) return false;
     if (ec == std::errc::result_out_of_range) {
-        // Overflow reads as infinity, underflow as zero, like strtod.
-        v = std::fabs(v) > 1.0 ? std::numeric_limits<double>::infinity() : 0.0;
+        // Overflow reads as infinity, underflow as zero, like strtod; which
+        // one it was is the sign of the exponent (from_chars leaves v alone).
+        const std::size_t e = body.find_first_of("eE");
+        const bool underflow = e != std::string_view::npos && e + 1 < body.size() && body[e + 1] == '-';
+        v = underflow ? 0.0 : std::numeric_limits<double>::infinity();
     } else if (ec != std::errc()) {
         return false;
     }

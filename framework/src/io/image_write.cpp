@@ -94,6 +94,11 @@ void writeExr(const Buffer& image, const std::string& path, const ImageWriteOpti
         if (ch.name == "Z") spec.z_channel = c;
     }
     spec.attribute("compression", options.compression);
+    // OpenImageIO stamps EXR files with the current time (capDate) unless a
+    // DateTime is given. An empty one keeps products reproducible: the same
+    // buffer always gives the same bytes, which a resumed Cinema capture
+    // relies on to end identical to an uninterrupted one.
+    spec.attribute("DateTime", "");
     std::vector<std::string> order;
     for (const auto& c : channels) order.push_back(c.name);
     io::putMetadata(image.metadata(), order, spec);

@@ -115,6 +115,8 @@ TEST(CinemaCsv, NumbersInEveryNotation) {
     }
     EXPECT_TRUE(parseCsvNumber("-Inf", v) && std::isinf(v) && v < 0);
     EXPECT_TRUE(parseCsvNumber("1e999", v) && std::isinf(v));
+    EXPECT_TRUE(parseCsvNumber("-1e999", v) && std::isinf(v) && v < 0);
+    EXPECT_TRUE(parseCsvNumber("1e-999", v) && v == 0.0);
     for (const char* bad : {"", "-", "abc", "1.0x", "0x10", "1,0", " 1", "e5", "--1"})
         EXPECT_FALSE(parseCsvNumber(bad, v)) << bad;
 }

@@ -69,7 +69,7 @@ int childMain(const std::string& spec) {
     return 0;
 }
 
-const bool kIsChild = [] {
+[[maybe_unused]] const bool kIsChild = [] {
     if (const char* spec = std::getenv("DARKROOM_CINEMA_CHILD")) std::_Exit(childMain(spec));
     return false;
 }();
@@ -189,7 +189,7 @@ TEST(CinemaKillResume, KilledAtArbitraryMomentsThenResumedEqualsUninterrupted) {
     // No pauses in the child: the kill lands wherever the writer happens to
     // be, often inside a product or data.csv write.
     int interrupted = 0;
-    for (int delayMs : {0, 2, 5, 9, 14, 20, 30, 45}) {
+    for (int delayMs : {0, 3, 10, 25, 50, 90, 150, 250}) {
         const std::string db = dir.file("killed-" + std::to_string(delayMs) + ".cdb");
         Child c = spawnChild("write", 0, db);
         ASSERT_TRUE(waitSignals(c, 1)) << "the child did not start";
@@ -199,7 +199,8 @@ TEST(CinemaKillResume, KilledAtArbitraryMomentsThenResumedEqualsUninterrupted) {
         resumeToTheEnd(db);
         expectSameDatabase(expected, snapshot(db), "kill after " + std::to_string(delayMs) + " ms");
     }
-    // The earliest kills must have hit a running child, or this test proved nothing.
+    // Writing all 20 entries takes a few hundred ms here; the earlier kills
+    // must have hit a running child, or this test proved nothing.
     EXPECT_GE(interrupted, 2);
 }
 
