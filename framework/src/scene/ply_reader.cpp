@@ -134,7 +134,18 @@ private:
         return int(mesh_.cellData.size() - 1);
     }
 
+    // Refuses counts the rest of the file cannot hold before allocating for them:
+    // each instance takes at least its fixed-size bytes (binary) or 2 characters per property (ASCII).
+    void checkCount(const Element& e) {
+        std::size_t least = 0;
+        for (const auto& p : e.properties) least += ascii_ ? 2 : mesh::sizeOf(p.isList ? p.countType : p.type);
+        if (least > 0 && e.count > cur_.remaining() / least)
+            throw Error(path_ + ": element '" + e.name + "' declares " + std::to_string(e.count) +
+                        " entries but the file is too short to hold them (truncated?)");
+    }
+
     void readElement(const Element& e) {
+        checkCount(e);
         const bool isVertex = e.name == "vertex", isFace = e.name == "face", isStrip = e.name == "tristrips";
         // Where each scalar property goes: x/y/z, a field, or nowhere.
         std::vector<int> fieldIndex(e.properties.size(), -1);
@@ -173,6 +184,7 @@ private:
                 }
                 const double n = value(e, i, p, p.countType);
                 if (!(n >= 0) || n != std::floor(n)) fail(e, i, "list length of '" + p.name + "' must be a non-negative integer");
+                if (n > double(cur_.remaining())) fail(e, i, "list '" + p.name + "' is longer than the rest of the file (truncated?)");
                 const bool indices = cells && (p.name == "vertex_indices" || p.name == "vertex_index");
                 for (std::size_t j = 0; j < std::size_t(n); ++j) {
                     const double v = value(e, i, p, p.type);

@@ -25,6 +25,7 @@ public:
     const std::string& source() const { return source_; }
     int line() const { return line_; }
     std::size_t position() const { return pos_; }
+    std::size_t remaining() const { return data_.size() - pos_; }
     bool atEnd() {
         skipSpace();
         return pos_ >= data_.size();

@@ -81,6 +81,10 @@ private:
         long long n = 0;
         if (!mesh::parseInteger(tok, n) || n < 0)
             failLine(std::string("expected ") + what + " (a non-negative integer), got '" + std::string(tok) + "'");
+        // Every counted thing takes at least a byte of the rest of the file;
+        // this also keeps products like count x components from overflowing.
+        if (std::size_t(n) > cur_.remaining() + 1)
+            failLine(std::string(what) + " " + std::string(tok) + " is larger than the rest of the file can hold (truncated?)");
         return std::size_t(n);
     }
 
@@ -92,6 +96,12 @@ private:
 
     // n values of type t: tokens in ASCII files, big-endian bytes in BINARY ones.
     std::vector<double> values(std::size_t n, ValueType t, const std::string& what) {
+        // Each value needs at least 2 characters (ASCII) or its size (binary):
+        // refuse impossible counts before allocating for them.
+        const std::size_t least = binary_ ? mesh::sizeOf(t) : 2;
+        if (n > (cur_.remaining() + 1) / least)
+            throw Error(path_ + ": element " + what + " (after line " + std::to_string(line_) + "): file ends early (truncated), expected " +
+                        std::to_string(n) + " values");
         std::vector<double> out(n);
         if (!binary_) {
             for (auto& v : out) v = cur_.number("a number in " + what);
@@ -146,7 +156,7 @@ private:
         for (std::size_t c = 0; c < a; ++c) {
             if (k >= v.size()) failLine(what + ": cell " + std::to_string(c) + " lies beyond the declared size " + std::to_string(b));
             const double n = v[k++];
-            if (!(n >= 0) || k + std::size_t(n) > v.size())
+            if (!(n >= 0) || n > double(v.size() - k))
                 failLine(what + ": cell " + std::to_string(c) + " has " + std::to_string(static_cast<long long>(n)) +
                          " points, more than the declared size " + std::to_string(b) + " holds");
             for (std::size_t j = 0; j < std::size_t(n); ++j) list.connectivity.push_back(pointIndex(v[k++], what));

@@ -337,7 +337,8 @@ private:
         const auto bounds = cellBounds(off, n, conn.values.size(), *e);
         for (std::size_t c = 0; c < n; ++c) {
             mesh::CellList* list = nullptr;
-            const int type = int(types.values[c]);
+            const double tv = types.values[c];
+            const int type = tv >= 0 && tv <= 255 ? int(tv) : -1;
             switch (type) {
                 case 1: case 2: list = &m_.vertices; break;      // vertex, poly-vertex
                 case 3: case 4: list = &m_.lines; break;         // line, polyline
