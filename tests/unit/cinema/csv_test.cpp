@@ -148,3 +148,38 @@ TEST(CinemaCsv, FileColumnNames) {
     for (const char* no : {"file", "FILES", "PROFILE", "path", "FILEx"})
         EXPECT_FALSE(isCinemaFileColumn(no)) << no;
 }
+
+// Random text built from the characters that matter to the parser: the
+// tolerant reader must always return a rectangular table (or say the file is
+// empty), the strict one a table or a darkroom::Error — never crash or hang.
+TEST(CinemaCsv, RandomInputNeverCrashes) {
+    const std::string alphabet = ",,,\"\"\n\n\r  \t1.e-+NnaFILE_x\xEF\xBB\xBF";
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    auto next = [&] {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    };
+    CsvReadOptions strict;
+    strict.strict = true;
+    int tables = 0;
+    for (int i = 0; i < 3000; ++i) {
+        std::string text(next() % 80, ' ');
+        for (char& c : text) c = alphabet[next() % alphabet.size()];
+        try {
+            const auto t = parseCsv(text, "fuzz.csv");
+            ++tables;
+            EXPECT_EQ(t.rows.size(), t.rowLines.size());
+            for (const auto& r : t.rows) ASSERT_EQ(r.size(), t.header.size()) << text;
+        } catch (const Error& e) {
+            EXPECT_THAT(e.what(), HasSubstr("empty")) << text;
+        }
+        try {
+            parseCsv(text, "fuzz.csv", strict);
+        } catch (const Error& e) {
+            EXPECT_THAT(e.what(), HasSubstr("fuzz.csv:")) << text;
+        }
+    }
+    EXPECT_GT(tables, 2000);
+}
