@@ -43,12 +43,6 @@ bool compatible(PortType from, PortType to) {
     return stringy(from) && (to == PortType::String || to == PortType::Path);
 }
 
-const Value* Node::parameter(const std::string& port) const {
-    for (const auto& [k, v] : parameters)
-        if (k == port) return &v;
-    return nullptr;
-}
-
 Graph::Graph(const Registry& registry) : registry_(&registry) {}
 
 void Graph::touch(Node& n) {

@@ -34,14 +34,38 @@ struct Reader {
     }
 };
 
+bool needsQuotes(const std::string& s);
+std::string quoted(const std::string& s);
+
 // One-line YAML text for a value the host does not interpret (placeholder
-// parameters, editor layout), so saving writes back what was read.
-std::string flowText(const YAML::Node& n) {
-    YAML::Emitter e;
-    e.SetMapFormat(YAML::Flow);
-    e.SetSeqFormat(YAML::Flow);
-    e << n;
-    return e.c_str();
+// parameters, editor layout), so saving writes back what was read. Scalars
+// that were quoted, or that would not survive as plain text, stay quoted.
+std::string flowText(const YAML::Node& n, bool inFlow = false) {
+    if (n.IsScalar()) {
+        const std::string& s = n.Scalar();
+        const bool wasQuoted = n.Tag() == "!";
+        const bool flowUnsafe = inFlow && s.find_first_of(",[]{}") != std::string::npos;
+        if ((wasQuoted && needsQuotes(s)) || flowUnsafe) {
+            const std::string q = quoted(s);
+            return q.front() == '"' ? q : "\"" + s + "\"";
+        }
+        return s;
+    }
+    if (n.IsSequence()) {
+        std::string out = "[";
+        for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ", " : "") + flowText(n[i], true);
+        return out + "]";
+    }
+    if (n.IsMap()) {
+        std::string out = "{";
+        bool first = true;
+        for (auto it = n.begin(); it != n.end(); ++it) {
+            out += (first ? "" : ", ") + flowText(it->first, true) + ": " + flowText(it->second, true);
+            first = false;
+        }
+        return out + "}";
+    }
+    return "null";
 }
 
 // Value text for typed ports: sequences become "[a, b, c]" for parseValue.

@@ -40,7 +40,7 @@ struct SceneObject {
     std::vector<ScalarField> fields;
 
     std::size_t vertexCount() const { return vertices.size() / 4; }
-    std::size_t primitiveCount() const;
+    DARKROOM_API std::size_t primitiveCount() const;
     const ScalarField* field(const std::string& n) const {
         for (const auto& f : fields)
             if (f.name == n) return &f;

@@ -45,7 +45,11 @@ struct Node {
     // Source position in the pipeline file (1-based; 0 if built in code).
     int line = 0, column = 0;
 
-    const Value* parameter(const std::string& port) const;
+    const Value* parameter(const std::string& port) const {
+        for (const auto& [k, v] : parameters)
+            if (k == port) return &v;
+        return nullptr;
+    }
 };
 
 // The node graph: nodes, typed connections, and the checks that must pass

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The plugin author's path, end to end: install the SDK, build the example
+# plugin out of tree with find_package(Darkroom), load it with the runner.
+set -euo pipefail
+: "${DARKROOM_BINARY_DIR:?}" "${DARKROOM_SOURCE_DIR:?}"
+cmake=${CMAKE_COMMAND:-cmake}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+echo "== install into a fresh prefix"
+"$cmake" --install "$DARKROOM_BINARY_DIR" --prefix "$work/prefix" > "$work/install.log"
+test -f "$work/prefix/lib/cmake/Darkroom/DarkroomConfig.cmake"
+
+for variant in installed buildtree; do
+  if [ $variant = installed ]; then dir="$work/prefix/lib/cmake/Darkroom"; else dir="$DARKROOM_BINARY_DIR"; fi
+  echo "== build the example against the $variant SDK"
+  "$cmake" -S "$DARKROOM_SOURCE_DIR/sdk/examples/invert" -B "$work/build-$variant" -G Ninja \
+    -DDarkroom_DIR="$dir" -DCMAKE_BUILD_TYPE=Release > "$work/configure-$variant.log"
+  "$cmake" --build "$work/build-$variant" > "$work/build-$variant.log"
+  test -f "$work/build-$variant/darkroom-invert.so"
+done
+
+runner="$work/prefix/bin/darkroom"
+plugin="$work/build-installed/darkroom-invert.so"
+echo "== the installed runner lists and describes the plugin"
+"$runner" --plugin-path "$plugin" plugins | tee "$work/plugins.txt"
+grep -q "Invert" "$work/plugins.txt"
+grep -q "invert-example" "$work/plugins.txt"
+DARKROOM_PLUGIN_PATH="$work/build-installed" "$runner" describe Invert | tee "$work/describe.txt"
+grep -q "amount" "$work/describe.txt"
+
+echo "== run a pipeline through the plugin"
+oiiotool --pattern constant:color=0.2,0.4,0.6,1 8x8 4 -d float -o "$work/in.exr"
+cat > "$work/invert.yaml" <<YAML
+darkroom: 1
+nodes:
+  read:
+    type: ImageReader
+    parameters:
+      path: in.exr
+  invert:
+    type: Invert
+  write:
+    type: ImageWriter
+    parameters:
+      path: out.exr
+edges:
+  - read.image -> invert.image
+  - invert.image -> write.image
+YAML
+"$runner" --plugin-path "$plugin" run "$work/invert.yaml"
+stats=$(oiiotool "$work/out.exr" --printstats)
+echo "$stats" | grep -E "Avg:" 
+echo "$stats" | grep -qE "Avg: 0\.80+ 0\.60+ 0\.40+ 1\.0+" || { echo "unexpected pixel values"; exit 1; }
+echo "out-of-tree plugin: OK"

@@ -1,0 +1,105 @@
+#include "test_filters.h"
+
+#include <darkroom/framework/graph.h>
+#include <gtest/gtest.h>
+
+using namespace darkroom;
+
+namespace {
+bool mentions(const Diagnostics& d, const std::string& node, const std::string& text) {
+    for (const auto& x : d)
+        if (x.node == node && x.message.find(text) != std::string::npos) return true;
+    return false;
+}
+}  // namespace
+
+TEST(Graph, ConnectChecksPortsAndTypes) {
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    g.addNode("num", "TestNumber");
+    g.addNode("add", "TestAdd");
+    std::string why;
+    EXPECT_FALSE(g.canConnect({"src", "nope"}, {"add", "a"}, &why));
+    EXPECT_NE(why.find("has no output 'nope'"), std::string::npos) << why;
+    EXPECT_FALSE(g.canConnect({"src", "image"}, {"add", "nope"}, &why));
+    EXPECT_NE(why.find("has no input 'nope'"), std::string::npos) << why;
+    EXPECT_FALSE(g.canConnect({"num", "value"}, {"add", "a"}, &why));
+    EXPECT_NE(why.find("types differ"), std::string::npos) << why;
+    EXPECT_TRUE(g.canConnect({"num", "value"}, {"add", "offset"}));
+    g.connect({"src", "image"}, {"add", "a"});
+    EXPECT_FALSE(g.canConnect({"src", "image"}, {"add", "a"}, &why));
+    EXPECT_THROW(g.connect({"src", "image"}, {"add", "a"}), Error);
+}
+
+TEST(Graph, RefusesCycles) {
+    Graph g(testfilters::registry());
+    g.addNode("a", "TestNoise");
+    g.addNode("b", "TestNoise");
+    g.connect({"a", "image"}, {"b", "image"});
+    std::string why;
+    EXPECT_FALSE(g.canConnect({"b", "image"}, {"a", "image"}, &why));
+    EXPECT_NE(why.find("cycle"), std::string::npos) << why;
+    // A cycle that slipped in unchecked (e.g. from a file) is caught by validate().
+    g.addEdgeUnchecked({{"b", "image"}, {"a", "image"}});
+    const Diagnostics d = g.validate();
+    bool found = false;
+    for (const auto& x : d) found |= x.message.find("cycle in the graph") != std::string::npos;
+    EXPECT_TRUE(found);
+    EXPECT_THROW(g.topologicalOrder(), Error);
+}
+
+TEST(Graph, ValidateReportsMissingInputsAndUnknownTypes) {
+    Graph g(testfilters::registry());
+    g.addNode("add", "TestAdd");
+    g.addPlaceholder("mystery", "NotAType");
+    const Diagnostics d = g.validate();
+    EXPECT_TRUE(mentions(d, "add", "required input 'a'"));
+    EXPECT_TRUE(mentions(d, "add", "required input 'b'"));
+    EXPECT_TRUE(mentions(d, "mystery", "unknown type 'NotAType'"));
+}
+
+TEST(Graph, ValidateReportsTypeMismatchAddedUnchecked) {
+    Graph g(testfilters::registry());
+    g.addNode("num", "TestNumber");
+    g.addNode("sink", "TestSink");
+    g.addEdgeUnchecked({{"num", "value"}, {"sink", "image"}});
+    EXPECT_TRUE(mentions(g.validate(), "sink", "cannot take num.value"));
+}
+
+TEST(Graph, ParametersAreCheckedAgainstPorts) {
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    EXPECT_THROW(g.setParameter("src", "width", Value(0)), Error);  // below range
+    EXPECT_THROW(g.setParameter("src", "width", Value(2.5)), Error);  // not an int
+    EXPECT_THROW(g.setParameter("src", "nope", Value(1)), Error);
+    EXPECT_THROW(g.addNode("src", "TestSource"), Error);  // duplicate name
+    EXPECT_THROW(g.addNode("x", "NotAType"), Error);
+    g.setParameter("src", "value", Value(2));  // ints widen to float ports
+    EXPECT_DOUBLE_EQ(g.node("src")->parameter("value")->asFloat(), 2.0);
+}
+
+TEST(Graph, MutationsBumpOnlyTheTouchedNode) {
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    g.addNode("noise", "TestNoise");
+    g.connect({"src", "image"}, {"noise", "image"});
+    const auto srcV = g.node("src")->version;
+    const auto noiseV = g.node("noise")->version;
+    g.setParameter("noise", "seed", Value(3));
+    EXPECT_EQ(g.node("src")->version, srcV);
+    EXPECT_NE(g.node("noise")->version, noiseV);
+    const auto again = g.node("noise")->version;
+    g.setParameter("noise", "seed", Value(3));  // same value: no change
+    EXPECT_EQ(g.node("noise")->version, again);
+}
+
+TEST(Graph, RemoveNodeDropsItsEdges) {
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    g.addNode("sink", "TestSink");
+    g.connect({"src", "image"}, {"sink", "image"});
+    g.removeNode("src");
+    EXPECT_TRUE(g.edges().empty());
+    EXPECT_EQ(g.sinks(), std::vector<std::string>{"sink"});
+    EXPECT_TRUE(mentions(g.validate(), "sink", "required input 'image'"));
+}
