@@ -17,5 +17,7 @@ void addPluginsCommand(CLI::App& app, GlobalOptions& global, Runner& run);
 void addDescribeCommand(CLI::App& app, GlobalOptions& global, Runner& run);
 void addValidateCommand(CLI::App& app, GlobalOptions& global, Runner& run);
 void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run);
+void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run);
+void addInfoCommand(CLI::App& app, GlobalOptions& global, Runner& run);
 
 }  // namespace darkroom::cli

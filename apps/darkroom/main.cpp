@@ -1,5 +1,5 @@
 // darkroom: the headless runner. Lists and describes plugins, validates and
-// runs pipelines. Exit codes: 0 success, 1 runtime failure, 2 bad usage or input.
+// runs pipelines, captures scenes into Cinema databases and describes them. Exit codes: 0 success, 1 runtime failure, 2 bad usage or input.
 #include "commands.h"
 
 #include <darkroom/error.h>
@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
     addDescribeCommand(app, global, run);
     addValidateCommand(app, global, run);
     addRunCommand(app, global, run);
+    addCaptureCommand(app, global, run);
+    addInfoCommand(app, global, run);
 
     try {
         app.parse(argc, argv);

@@ -2,6 +2,7 @@
 #include "progress_bar.h"
 
 #include <darkroom/error.h>
+#include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/evaluator.h>
 #include <darkroom/framework/pipeline.h>
 
@@ -38,6 +39,36 @@ bool applySet(Graph& g, const std::string& assignment) {
     return true;
 }
 
+// out.png -> out_phi=30_theta=45.png, or the {entry} placeholder replaced.
+std::string perEntryPath(const std::string& path, const std::string& entry) {
+    std::string out = path;
+    const std::string tag = "{entry}";
+    if (out.find(tag) != std::string::npos) {
+        for (auto pos = out.find(tag); pos != std::string::npos; pos = out.find(tag, pos + entry.size()))
+            out.replace(pos, tag.size(), entry);
+        return out;
+    }
+    const std::filesystem::path p(path);
+    return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
+}
+
+// The Path parameters of every output node, to rename per entry.
+std::vector<std::pair<std::string, std::string>> outputPathPorts(const Graph& g) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& name : g.sinks()) {
+        const Node* n = g.node(name);
+        for (const auto& p : g.ports(*n).inputs)
+            if (p.type == PortType::Path) out.emplace_back(name, p.name);
+    }
+    return out;
+}
+
+std::string currentValue(const Graph& g, const std::string& node, const std::string& port) {
+    const Node* n = g.node(node);
+    if (const Value* v = n->parameter(port)) return v->asString();
+    return g.ports(*n).input(port)->defaultValue.asString();
+}
+
 }  // namespace
 
 void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
@@ -47,12 +78,21 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         std::vector<std::string> sets;
         std::string output;
         int threads = 0;
+        std::string foreach;
+        std::string where;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("PIPELINE", a->path, "Pipeline YAML file")->required();
     cmd->add_option("--set", a->sets, "Override a parameter: node.port=value (repeatable)")->type_name("NODE.PORT=VALUE");
     cmd->add_option("-o,--output", a->output, "Directory for relative output paths (default: the pipeline's folder)")
         ->type_name("DIR");
+    auto* fe = cmd->add_option("--foreach", a->foreach,
+                               "Run once per entry of the Cinema database read by NODE (a CinemaReader); "
+                               "output paths get the entry's parameters, or replace {entry}")
+                   ->type_name("NODE");
+    cmd->add_option("--where", a->where, "With --foreach: only entries matching, e.g. \"theta=0, phi=30\"")
+        ->needs(fe)
+        ->type_name("QUERY");
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->callback([&global, &run, a] {
         run = [&global, a] {
@@ -82,7 +122,45 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             };
             Evaluator ev(o);
             try {
-                ev.run(g);
+                if (a->foreach.empty()) {
+                    ev.run(g);
+                } else {
+                    const Node* reader = g.node(a->foreach);
+                    if (!reader || !g.ports(*reader).input("database") || !g.ports(*reader).input("parameters")) {
+                        reportError("--foreach " + a->foreach +
+                                    ": expected the name of a CinemaReader node (with 'database' and 'parameters')");
+                        return int(kBadInput);
+                    }
+                    std::filesystem::path dbPath = currentValue(g, a->foreach, "database");
+                    if (dbPath.is_relative()) dbPath = std::filesystem::path(o.inputBase) / dbPath;
+                    const CinemaDatabase db = CinemaDatabase::open(dbPath.string());
+                    std::vector<std::size_t> rows;
+                    if (a->where.empty())
+                        for (std::size_t r = 0; r < db.rowCount(); ++r) rows.push_back(r);
+                    else
+                        rows = db.select(CinemaDatabase::parseQuery(a->where));
+                    if (rows.empty()) {
+                        reportError(dbPath.string() + ": no entry matches '" + a->where + "'");
+                        return int(kBadInput);
+                    }
+                    const auto outputs = outputPathPorts(g);
+                    std::vector<std::string> originals;
+                    for (const auto& [n, p] : outputs) originals.push_back(currentValue(g, n, p));
+                    for (std::size_t i = 0; i < rows.size(); ++i) {
+                        g.setParameter(a->foreach, "parameters", Value(db.formatParameters(rows[i])));
+                        for (std::size_t k = 0; k < outputs.size(); ++k)
+                            if (!originals[k].empty())
+                                g.setParameter(outputs[k].first, outputs[k].second,
+                                               Value(perEntryPath(originals[k], db.entryName(rows[i]))));
+                        const std::string entry = db.entryName(rows[i]);
+                        const double n = double(rows.size());
+                        o.onProgress = [&bar, i, n, entry](double f, const std::string&) {
+                            bar.update((double(i) + f) / n, entry);
+                        };
+                        ev.setOptions(o);
+                        ev.run(g);
+                    }
+                }
             } catch (const GraphError& e) {
                 bar.finish();
                 report(e.diagnostics());
