@@ -1,0 +1,103 @@
+#include "pass_bench.h"
+
+#include <darkroom/framework/registry.h>
+#include <darkroom/framework/run_filter.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace darkroom::bench {
+
+namespace {
+Registry& registry() {
+    static Registry* r = [] {
+        auto* x = new Registry();
+        x->loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
+        return x;
+    }();
+    return *r;
+}
+
+double memcpySeconds(std::size_t bytes) {
+    std::vector<char> a(bytes, 1), b(bytes);
+    double best = 1e30;
+    for (int i = 0; i < 5; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        std::memcpy(b.data(), a.data(), bytes);
+        benchmark::DoNotOptimize(b.data());
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return best;
+}
+}  // namespace
+
+BufferPtr syntheticGBuffer(int size) {
+    std::vector<ChannelDesc> ch = {{"Z"}, {"N.x"}, {"N.y"}, {"N.z"}, {"value"}, {"R"}, {"G"}, {"B"}, {"A"},
+                                   {"objectId", ChannelType::UInt32}};
+    auto b = makeCpuBuffer(size, size, ch);
+    Camera cam;
+    cam.width = cam.height = size;
+    cam.position = {0, 0, 5};
+    cam.forward = {0, 0, -1};
+    b->metadata().camera = cam;
+    float* z = b->hostFloat("Z");
+    float* v = b->hostFloat("value");
+    float* nx = b->hostFloat("N.x");
+    float* ny = b->hostFloat("N.y");
+    float* nz = b->hostFloat("N.z");
+    float* rgba[4] = {b->hostFloat("R"), b->hostFloat("G"), b->hostFloat("B"), b->hostFloat("A")};
+    std::uint32_t* id = b->hostUInt("objectId");
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const std::size_t i = std::size_t(y) * size + x;
+            const double u = double(x) / size, w = double(y) / size;
+            const bool bg = (u - 0.5) * (u - 0.5) + (w - 0.5) * (w - 0.5) > 0.2;
+            const double h = 0.2 * std::sin(12 * u) * std::cos(9 * w);
+            z[i] = bg ? std::numeric_limits<float>::infinity() : float(5.0 - h);
+            v[i] = float(h);
+            const double gx = 0.2 * 12 * std::cos(12 * u) * std::cos(9 * w), gy = -0.2 * 9 * std::sin(12 * u) * std::sin(9 * w);
+            const double l = std::sqrt(gx * gx + gy * gy + 1);
+            nx[i] = float(-gx / l);
+            ny[i] = float(gy / l);
+            nz[i] = float(1 / l);
+            for (int c = 0; c < 3; ++c) rgba[c][i] = float(0.5 + 0.5 * std::sin(h * 10 + c));
+            rgba[3][i] = bg ? 0.0f : 1.0f;
+            id[i] = bg ? ~0u : std::uint32_t(x / 64 + y / 64);
+        }
+    return b;
+}
+
+void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
+             const std::map<std::string, Value>& parameters) {
+    auto filter = registry().createFilter(type);
+    const PortList ports = filter->ports();
+    std::map<std::string, std::vector<Value>> inputs;
+    const BufferPtr g = syntheticGBuffer(size);
+    for (const auto& p : ports.inputs)
+        if (p.type == PortType::Image && !p.optional) inputs[p.name] = {Value(g)};
+    for (const auto& [k, v] : parameters) inputs[k] = {v};
+    FilterRunOptions o;
+    o.registry = &registry();
+    // One warm-up run tells how many channels the pass writes.
+    const FilterRunResult warm = runFilter(*filter, inputs, o);
+    std::size_t written = 0;
+    for (const auto& [k, v] : warm.outputs)
+        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b) written += (*b)->channels().size();
+    const std::size_t bytes = std::size_t(size) * size * 4 * (std::size_t(channelsRead) + written);
+    const double copy = memcpySeconds(bytes);
+    double total = 0;
+    for (auto _ : state) {
+        const auto t0 = std::chrono::steady_clock::now();
+        FilterRunResult r = runFilter(*filter, inputs, o);
+        benchmark::DoNotOptimize(r);
+        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    const double per = total / double(state.iterations());
+    state.counters["MP/s"] = double(size) * size / per / 1e6;
+    state.counters["vs_memcpy"] = per / copy;
+    state.counters["bytes"] = double(bytes);
+}
+
+}  // namespace darkroom::bench

@@ -1,0 +1,28 @@
+#pragma once
+// Shared harness for pass benchmarks: a synthetic G-buffer, the build's
+// plugins, and counters that put each pass next to a memcpy of the bytes it
+// must read and write, measured in the same process.
+#include <benchmark/benchmark.h>
+#include <darkroom/buffer.h>
+#include <darkroom/value.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace darkroom::bench {
+
+// size x size G-buffer of a bumpy terrain seen from above: Z (with ~10 %
+// background), N.x/N.y/N.z, a scalar "value", linear R, G, B, A, objectId.
+BufferPtr syntheticGBuffer(int size);
+
+// Runs filter `type` on `inputs` (image ports get syntheticGBuffer(size) when
+// not given) for every benchmark iteration, and sets counters:
+//   MP/s        megapixels per second
+//   vs_memcpy   pass time / time of a memcpy of (input channels read + output
+//               channels written) bytes, measured just before
+// `channelsRead` is how many float channels of the input the pass reads.
+void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
+             const std::map<std::string, Value>& parameters = {});
+
+}  // namespace darkroom::bench
