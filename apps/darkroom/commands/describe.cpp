@@ -20,7 +20,8 @@ std::string portLine(const PortSpec& p) {
             s += ";";
         }
     } else if (!p.defaultValue.empty()) {
-        s += " default " + formatValue(p.type, p.defaultValue) + ";";
+        const std::string text = formatValue(p.type, p.defaultValue);
+        s += " default " + (text.empty() ? std::string("\"\"") : text) + ";";
     }
     if (p.minimum && p.maximum)
         s += " range [" + formatValue(PortType::Float, *p.minimum) + ", " + formatValue(PortType::Float, *p.maximum) + "];";

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The README's main command: installs dependencies, builds the runner and its
+# plugins, captures the built-in demo scene (isosurface, streamlines,
+# particles, maxima) into Cinema databases under out/demo/, and shades one
+# view of it into out/demo.png with docs/examples/demo.yaml.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/install-deps.sh"
+export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
+"$root/scripts/build.sh" runner
+darkroom="$DARKROOM_BUILD_DIR/bin/darkroom"
+mkdir -p "$root/out/demo"
+for part in surface flow particles; do
+  "$darkroom" capture "$root/docs/examples/demo/$part.yaml" --output "$root/out/demo/$part.cdb" --overwrite
+done
+"$darkroom" run "$root/docs/examples/demo.yaml" --output "$root/out"
+echo "Wrote $root/out/demo.png"
