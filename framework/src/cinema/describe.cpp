@@ -1,14 +1,44 @@
 // What `darkroom info` shows about a database: its rows, each column's type
 // and range, and per FILE column the channels, size and camera of a product.
 #include <darkroom/error.h>
+#include <darkroom/framework/cinema/composable.h>
 #include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/framework/cinema/product.h>
+#include <darkroom/framework/formats/npy.h>
+
+#include <filesystem>
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 
 namespace darkroom {
+
+namespace {
+
+bool hasExtension(const std::string& path, const char* ext) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e == ext;
+}
+
+// .npz: the members' dtypes and shapes from their headers, without reading the data.
+void describeNpz(CinemaProductInfo& p) {
+    for (const auto& a : readNpzHeaders(p.path)) {
+        std::string shape;
+        for (std::size_t d : a.shape) shape += (shape.empty() ? "" : ", ") + std::to_string(d);
+        p.details.push_back(fmt::format("{}.npy: {} ({}){}", a.name, a.descr, shape,
+                                        a.fortranOrder ? " Fortran order" : ""));
+        p.channels.push_back({a.name, ChannelType::Float32});
+        if (a.shape.size() >= 2 && p.width == 0) {
+            p.height = int(a.shape[0]);
+            p.width = int(a.shape[1]);
+        }
+    }
+}
+
+}  // namespace
 
 CinemaDescription CinemaDatabase::describe() const {
     CinemaDescription d;
@@ -28,16 +58,42 @@ CinemaDescription CinemaDatabase::describe() const {
         } else {
             p.path = productPath(row, p.column);
             try {
-                const auto image = readImage(p.path);
-                p.width = image->width();
-                p.height = image->height();
-                p.channels = image->channels();
-                p.camera = image->metadata().camera;
+                if (hasExtension(p.path, ".npz")) {
+                    describeNpz(p);
+                } else {
+                    Diagnostics notes;
+                    const auto image = readCinemaProduct(p.path, &notes);
+                    p.width = image->width();
+                    p.height = image->height();
+                    p.channels = image->channels();
+                    p.camera = image->metadata().camera;
+                    for (const auto& n : notes) p.details.push_back(n.message);
+                }
             } catch (const std::exception& e) {
                 p.error = e.what();
             }
         }
         d.products.push_back(std::move(p));
+    }
+    if (isComposableImageSet(*this)) {
+        try {
+            for (const auto& img : composableImages(*this)) {
+                d.composable.push_back(fmt::format("image {} ({} x {}), {} layers", img.id, img.width, img.height,
+                                                   img.layers.size()));
+                for (const auto& l : img.layers) {
+                    std::string channels;
+                    for (const auto& ch : l.channels) {
+                        channels += (channels.empty() ? "" : ", ") + ch.bufferName();
+                        if (ch.isDepth) channels += " (from " + ch.variable + ")";
+                        if (!ch.colormap.empty()) channels += " (colour map " + ch.colormap + ")";
+                    }
+                    d.composable.push_back(fmt::format("  layer {} [{}] {} x {} at ({}, {}): {}", l.id, l.parameters,
+                                                       l.width, l.height, l.offsetX, l.offsetY, channels));
+                }
+            }
+        } catch (const std::exception& e) {
+            d.composable.push_back(std::string("could not group the composable image set: ") + e.what());
+        }
     }
     return d;
 }
@@ -74,6 +130,7 @@ std::string formatDescription(const CinemaDescription& d) {
         for (const auto& ch : p.channels)
             channels += fmt::format("{}{} ({})", channels.empty() ? "" : ", ", ch.name, toString(ch.type));
         out += fmt::format("  channels {}\n", channels);
+        for (const auto& line : p.details) out += fmt::format("  {}\n", line);
         if (p.camera) {
             const Camera& cam = *p.camera;
             const std::string lens = cam.projection == Camera::Projection::Perspective
@@ -85,6 +142,10 @@ std::string formatDescription(const CinemaDescription& d) {
         } else {
             out += "  camera   none recorded\n";
         }
+    }
+    if (!d.composable.empty()) {
+        out += "composable image set (each layer reads as one buffer; depth as Z):\n";
+        for (const auto& line : d.composable) out += "  " + line + "\n";
     }
     for (const auto& w : d.warnings) out += w.str() + "\n";
     return out;

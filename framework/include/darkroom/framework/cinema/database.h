@@ -47,6 +47,8 @@ struct CinemaProductInfo {
     std::vector<ChannelDesc> channels;
     std::optional<Camera> camera;
     std::string error;  // non-empty when the product could not be read
+    // Format-specific facts: .npz members with dtype and shape, .vti arrays.
+    std::vector<std::string> details;
 };
 
 // What `darkroom info` prints.
@@ -55,6 +57,8 @@ struct CinemaDescription {
     std::size_t rows = 0;
     std::vector<CinemaColumn> columns;
     std::vector<CinemaProductInfo> products;  // one per FILE column
+    // Composable image sets: one line per image and layer with its channels.
+    std::vector<std::string> composable;
     Diagnostics warnings;
 };
 
@@ -99,6 +103,20 @@ public:
     // Every row matching (same rules); empty when none.
     std::vector<std::size_t> select(const std::vector<CinemaConstraint>& constraints) const;
 
+    // Rows whose values satisfy an SQL WHERE expression ("phi > 0 AND theta =
+    // 0"; a leading "WHERE" is allowed), in database order. data.csv is loaded
+    // into an in-memory SQLite table `input`: numeric columns REAL (NaN and
+    // empty cells NULL), the others TEXT, column names quoted as written.
+    // Unlike find()/select(), values are compared exactly. Throws
+    // darkroom::Error with SQLite's message and the query text. Empty = all rows.
+    std::vector<std::size_t> query(const std::string& sqlWhere) const;
+    // True when `where` is SQL rather than the simple "name=value, ..." form:
+    // it holds < > ! ( ) or a single quote outside "double quotes", or a word
+    // AND, OR, NOT, LIKE, IN, BETWEEN, IS, GLOB, NULL.
+    static bool looksLikeSql(std::string_view where);
+    // query(where) when looksLikeSql(where), else select(parseQuery(where)).
+    std::vector<std::size_t> selectWhere(const std::string& where) const;
+
     // "phi=30, theta=45": the row's parameter (non-FILE) columns as written,
     // such that find(formatParameters(r)) returns a row with the same values.
     std::string formatParameters(std::size_t row) const;
@@ -106,7 +124,9 @@ public:
     std::string entryName(std::size_t row) const;
 
     // Rows, columns and, per FILE column, the first product's size, channels
-    // and camera (read with readImage; a failure is recorded, not thrown).
+    // and camera (read with readCinemaProduct's header reading: images, .npz,
+    // .vti; a failure is recorded, not thrown); composable image sets are
+    // summarised image by image.
     CinemaDescription describe() const;
 
 private:
