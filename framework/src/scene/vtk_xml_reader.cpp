@@ -1,15 +1,13 @@
 // VTK XML PolyData (.vtp) and UnstructuredGrid (.vtu). DataArrays in ascii,
 // binary (inline base64) or appended (raw or base64) form, zlib-compressed or
 // not, UInt32 or UInt64 headers, either byte order, several pieces merged.
-#include "base64.h"
 #include "binary_values.h"
 #include "poly_mesh.h"
 #include "text_cursor.h"
+#include "vtk_data_array.h"
 #include "xml_document.h"
 
 #include <darkroom/framework/scene/mesh_readers.h>
-
-#include <zlib.h>
 
 #include <cctype>
 #include <cmath>
@@ -21,54 +19,7 @@ namespace {
 using mesh::ValueType;
 using mesh::XmlElement;
 
-// Sequential access to the bytes behind one binary DataArray.
-class ByteSource {
-public:
-    virtual ~ByteSource() = default;
-    virtual bool read(std::size_t n, std::string& out, std::string& error) = 0;
-};
-
-class RawSource : public ByteSource {
-public:
-    explicit RawSource(std::string_view bytes) : bytes_(bytes) {}
-    bool read(std::size_t n, std::string& out, std::string& error) override {
-        if (bytes_.size() - pos_ < n) {
-            error = "appended data ends early (truncated): " + std::to_string(n) + " more bytes expected";
-            return false;
-        }
-        out.append(bytes_.substr(pos_, n));
-        pos_ += n;
-        return true;
-    }
-
-private:
-    std::string_view bytes_;
-    std::size_t pos_ = 0;
-};
-
-class Base64Source : public ByteSource {
-public:
-    explicit Base64Source(std::string_view text) : stream_(text) {}
-    bool read(std::size_t n, std::string& out, std::string& error) override { return stream_.read(n, out, error); }
-
-private:
-    mesh::Base64Stream stream_;
-};
-
-struct FileInfo {
-    std::string path;
-    bool bigEndian = false;
-    ValueType headerType = ValueType::UInt32;
-    bool compressed = false;
-    const mesh::VtkXmlDocument* doc = nullptr;
-    bool appendedBase64 = false;
-};
-
-struct Array {
-    std::string name;
-    int components = 1;
-    std::vector<double> values;
-};
+using Array = mesh::VtkArray;
 
 class XmlReader {
 public:
@@ -82,22 +33,7 @@ public:
         const std::string type = root.attributeOr("type", "");
         if (type != "PolyData" && type != "UnstructuredGrid")
             fail(root, "unsupported dataset type '" + type + "' (expected PolyData or UnstructuredGrid)");
-        const std::string order = root.attributeOr("byte_order", "LittleEndian");
-        if (order != "LittleEndian" && order != "BigEndian") fail(root, "byte_order must be LittleEndian or BigEndian");
-        f_.bigEndian = order == "BigEndian";
-        const std::string ht = root.attributeOr("header_type", "UInt32");
-        if (ht == "UInt64") f_.headerType = ValueType::UInt64;
-        else if (ht != "UInt32") fail(root, "header_type must be UInt32 or UInt64, got '" + ht + "'");
-        if (const std::string* c = root.attribute("compressor")) {
-            if (*c != "vtkZLibDataCompressor")
-                fail(root, "unsupported compressor '" + *c + "' (only vtkZLibDataCompressor is read)");
-            f_.compressed = true;
-        }
-        if (doc_.appendedElement) {
-            const std::string enc = doc_.appendedElement->attributeOr("encoding", "raw");
-            if (enc != "raw" && enc != "base64") fail(*doc_.appendedElement, "AppendedData encoding must be raw or base64");
-            f_.appendedBase64 = enc == "base64";
-        }
+        f_ = mesh::vtkXmlEncoding(doc_, f_.path);
         const XmlElement* dataset = root.child(type);
         if (!dataset) fail(root, "missing <" + type + "> element");
         m_.source = f_.path;
@@ -122,101 +58,9 @@ private:
         throw Error(f_.path + ":" + std::to_string(e.line) + ": " + what);
     }
 
-    std::size_t countAttr(const XmlElement& e, const char* key) const {
-        const std::string* v = e.attribute(key);
-        long long n = 0;
-        if (!v) return 0;
-        if (!mesh::parseInteger(*v, n) || n < 0)
-            fail(e, std::string(key) + " must be a non-negative integer, got '" + *v + "'");
-        return std::size_t(n);
-    }
+    std::size_t countAttr(const XmlElement& e, const char* key) const { return mesh::vtkCountAttribute(e, f_.path, key); }
 
-    std::size_t headerWord(ByteSource& src, const std::string& where) const {
-        std::string b, err;
-        if (!src.read(mesh::sizeOf(f_.headerType), b, err)) throw Error(where + err);
-        return std::size_t(mesh::loadValue(f_.headerType, b.data(), f_.bigEndian));
-    }
-
-    // The bytes of one binary block: header + data, or header + zlib blocks.
-    std::string block(ByteSource& src, const std::string& where) const {
-        std::string out, err;
-        if (!f_.compressed) {
-            const std::size_t n = headerWord(src, where);
-            if (!src.read(n, out, err)) throw Error(where + err);
-            return out;
-        }
-        const std::size_t nb = headerWord(src, where), bs = headerWord(src, where), last = headerWord(src, where);
-        std::vector<std::size_t> sizes(nb > (1u << 24) ? 0 : nb);
-        if (sizes.size() != nb) throw Error(where + "implausible zlib block count " + std::to_string(nb));
-        for (auto& s : sizes) s = headerWord(src, where);
-        for (std::size_t i = 0; i < nb; ++i) {
-            const std::size_t raw = (i + 1 == nb && last != 0) ? last : bs;
-            // Deflate expands at most ~1032:1; anything more is a corrupt header.
-            if (raw > sizes[i] * 1032 + 64) throw Error(where + "zlib block " + std::to_string(i) + " claims an impossible size");
-            std::string comp;
-            if (!src.read(sizes[i], comp, err)) throw Error(where + err);
-            const std::size_t at = out.size();
-            out.resize(at + raw);
-            uLongf len = uLongf(raw);
-            const int rc = uncompress(reinterpret_cast<Bytef*>(out.data() + at), &len,
-                                      reinterpret_cast<const Bytef*>(comp.data()), uLong(comp.size()));
-            if (rc != Z_OK || len != raw)
-                throw Error(where + "zlib block " + std::to_string(i) + " is corrupt (" +
-                            (rc == Z_OK ? "wrong size" : std::string(zError(rc))) + ")");
-        }
-        return out;
-    }
-
-    Array dataArray(const XmlElement& e) const {
-        Array a;
-        a.name = e.attributeOr("Name", "");
-        const std::string where = f_.path + ":" + std::to_string(e.line) + ": DataArray '" + a.name + "': ";
-        const std::string typeName = e.attributeOr("type", "");
-        const auto type = mesh::vtkXmlType(typeName);
-        if (!type) throw Error(where + "unsupported type '" + typeName + "' (expected Float32, Float64, Int8..Int64 or UInt8..UInt64)");
-        a.components = e.attribute("NumberOfComponents") ? int(countAttr(e, "NumberOfComponents")) : 1;
-        if (a.components < 1) throw Error(where + "NumberOfComponents must be at least 1");
-        const std::string format = e.attributeOr("format", "ascii");
-        if (format == "ascii") {
-            const std::string_view text = e.text;
-            std::size_t i = 0;
-            while (i < text.size()) {
-                while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-                const std::size_t b = i;
-                while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-                if (i == b) break;
-                double v = 0;
-                if (!mesh::parseDouble(text.substr(b, i - b), v))
-                    throw Error(where + "expected a number, got '" + std::string(text.substr(b, std::min<std::size_t>(i - b, 40))) + "'");
-                a.values.push_back(v);
-            }
-            return a;
-        }
-        std::string bytes;
-        if (format == "binary") {
-            Base64Source src(e.text);
-            bytes = block(src, where);
-        } else if (format == "appended") {
-            if (!doc_.appendedElement) throw Error(where + "format is appended but the file has no <AppendedData>");
-            const std::size_t offset = countAttr(e, "offset");
-            if (offset > doc_.appended.size()) throw Error(where + "offset " + std::to_string(offset) + " lies beyond the appended data");
-            const std::string_view rest = doc_.appended.substr(offset);
-            if (f_.appendedBase64) {
-                Base64Source src(rest);
-                bytes = block(src, where);
-            } else {
-                RawSource src(rest);
-                bytes = block(src, where);
-            }
-        } else {
-            throw Error(where + "unknown format '" + format + "' (expected ascii, binary or appended)");
-        }
-        const std::size_t sz = mesh::sizeOf(*type);
-        if (bytes.size() % sz != 0) throw Error(where + "byte count " + std::to_string(bytes.size()) + " is not a multiple of " + typeName);
-        a.values.resize(bytes.size() / sz);
-        for (std::size_t i = 0; i < a.values.size(); ++i) a.values[i] = mesh::loadValue(*type, bytes.data() + i * sz, f_.bigEndian);
-        return a;
-    }
+    Array dataArray(const XmlElement& e) const { return mesh::readVtkDataArray(e, f_); }
 
     // The DataArray named `name` inside `parent` (or the first one when name is empty).
     Array required(const XmlElement& parent, const std::string& name, std::size_t expected, int components) const {
@@ -356,7 +200,7 @@ private:
         }
     }
 
-    FileInfo f_;
+    mesh::VtkXmlEncoding f_;
     mesh::VtkXmlDocument doc_;
     mesh::PolyMesh m_;
     std::vector<std::string>* warnings_;
