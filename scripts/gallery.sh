@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Renders the example gallery: captures the demo scene (if out/demo is
+# missing), then runs every pipeline in docs/examples/*.yaml, writing its
+# pictures into docs/gallery/. Each example writes <name>.png.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
+darkroom="$DARKROOM_BUILD_DIR/bin/darkroom"
+[ -x "$darkroom" ] || "$root/scripts/build.sh" runner
+mkdir -p "$root/out/demo" "$root/docs/gallery"
+for part in surface flow particles; do
+  [ -d "$root/out/demo/$part.cdb" ] ||
+    "$darkroom" capture "$root/docs/examples/demo/$part.yaml" --output "$root/out/demo/$part.cdb"
+done
+status=0
+for pipeline in "$root"/docs/examples/*.yaml; do
+  name=$(basename "$pipeline" .yaml)
+  if "$darkroom" run "$pipeline" --output "$root/docs/gallery"; then
+    echo "rendered $name"
+  else
+    echo "FAILED: $name" >&2
+    status=1
+  fi
+done
+exit $status
