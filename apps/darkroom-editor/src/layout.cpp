@@ -1,0 +1,55 @@
+#include "layout.h"
+
+#include <QRegularExpression>
+#include <QString>
+
+#include <map>
+
+namespace editor {
+
+std::optional<QPointF> nodePosition(const darkroom::Node& n) {
+    static const QRegularExpression re(
+        R"(position:\s*\[\s*(-?[0-9.eE+-]+)\s*,\s*(-?[0-9.eE+-]+)\s*\])");
+    for (const auto& [k, v] : n.extras) {
+        if (k != "ui") continue;
+        const auto m = re.match(QString::fromStdString(v));
+        if (m.hasMatch()) return QPointF(m.captured(1).toDouble(), m.captured(2).toDouble());
+    }
+    return std::nullopt;
+}
+
+void setNodePosition(darkroom::Node& n, QPointF p) {
+    // Whole numbers keep the file tidy and the text canonical for the loader.
+    const std::string text = "{position: [" + std::to_string(qRound(p.x())) + ", " +
+                             std::to_string(qRound(p.y())) + "]}";
+    for (auto& [k, v] : n.extras)
+        if (k == "ui") {
+            v = text;
+            return;
+        }
+    n.extras.emplace_back("ui", text);
+}
+
+void autoLayout(darkroom::Graph& g) {
+    std::map<std::string, int> depth;
+    std::vector<std::string> order;
+    try {
+        order = g.topologicalOrder();
+    } catch (const std::exception&) {
+        for (const auto& n : g.nodes()) order.push_back(n.name);  // a cycle: one column
+    }
+    for (const auto& name : order) {
+        int d = 0;
+        for (const auto& e : g.edgesInto(name))
+            if (depth.count(e.from.node)) d = std::max(d, depth[e.from.node] + 1);
+        depth[name] = d;
+    }
+    std::map<int, int> rows;
+    for (const auto& n : g.nodes()) {
+        if (nodePosition(n)) continue;
+        const int d = depth[n.name];
+        setNodePosition(*g.node(n.name), QPointF(d * 300.0, rows[d]++ * 260.0));
+    }
+}
+
+}  // namespace editor

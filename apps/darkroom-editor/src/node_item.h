@@ -1,0 +1,59 @@
+#pragma once
+// One node in the graph view: a titled box with input ports on the left,
+// outputs on the right, and the value widget of each unconnected value input.
+#include <darkroom/framework/graph.h>
+
+#include <QGraphicsEllipseItem>
+#include <QGraphicsObject>
+
+#include <map>
+
+namespace editor {
+
+class ParamWidget;
+
+class PortItem : public QGraphicsEllipseItem {
+public:
+    enum { Type = UserType + 1 };
+    PortItem(const darkroom::PortSpec& spec, bool output, QGraphicsItem* parent);
+    int type() const override { return Type; }
+    const darkroom::PortSpec& spec() const { return spec_; }
+    bool isOutput() const { return output_; }
+    QString nodeName() const;
+
+private:
+    darkroom::PortSpec spec_;
+    bool output_;
+};
+
+class NodeItem : public QGraphicsObject {
+    Q_OBJECT
+public:
+    enum { Type = UserType + 2 };
+    NodeItem(const darkroom::Node& node, const darkroom::PortList& ports, const QString& baseFolder);
+    int type() const override { return Type; }
+    QRectF boundingRect() const override;
+    void paint(QPainter* p, const QStyleOptionGraphicsItem* o, QWidget* w) override;
+
+    const QString& name() const { return name_; }
+    const std::string& typeName() const { return type_; }
+    PortItem* port(const QString& name, bool output) const;
+    ParamWidget* paramWidget(const QString& port) const;
+    // Shows the node's current values; hides widgets of connected inputs.
+    void refresh(const darkroom::Graph& g);
+    void setError(const QString& message);  // empty clears
+
+signals:
+    void parameterEdited(const QString& node, const QString& port, const darkroom::Value& v);
+
+private:
+    QString name_;
+    std::string type_;
+    QString error_;
+    qreal height_ = 0;
+    std::map<QString, PortItem*> inputs_, outputs_;
+    std::map<QString, class QGraphicsProxyWidget*> proxies_;
+    std::map<QString, ParamWidget*> widgets_;
+};
+
+}  // namespace editor
