@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <vector>
+#include <memory>
 
 namespace darkroom {
 
@@ -99,9 +99,11 @@ void Fxaa::execute(Context& ctx) {
     const float* a = in->hostFloat("A");  // optional; a uint32 "A" is just passed through
 
     // Pass 1: luma of every pixel, NaN where it must not be blended.
-    std::vector<float> luma(in->pixelCount());
+    // Not value-initialised: every entry is written below, and on large
+    // images zeroing would be a pass over memory of its own.
+    const std::unique_ptr<float[]> luma(new float[in->pixelCount()]);
     ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
-        fxaa::computeLuma(r, g, b, a, luma.data(), std::size_t(y0) * rowLength, std::size_t(y1) * rowLength);
+        fxaa::computeLuma(r, g, b, a, luma.get(), std::size_t(y0) * rowLength, std::size_t(y1) * rowLength);
     });
     if (ctx.cancelled()) return;
     ctx.progress(0.3);
@@ -110,7 +112,7 @@ void Fxaa::execute(Context& ctx) {
     out->metadata() = in->metadata();
     const ColourPlanes planes{r, g, b, a, out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B"),
                               a ? out->hostFloat("A") : nullptr};
-    const fxaa::LumaPlane plane{luma.data(), w, h};
+    const fxaa::LumaPlane plane{luma.get(), w, h};
 
     // Pass 2: each pixel reads the luma around it and writes only itself, so
     // rows are independent and the result does not depend on the split.
