@@ -100,4 +100,33 @@ void runPass(benchmark::State& state, const std::string& type, int size, int cha
     state.counters["bytes"] = double(bytes);
 }
 
+void runPassWithImages(benchmark::State& state, const std::string& type, int size, int channelsRead,
+                       const std::map<std::string, std::vector<BufferPtr>>& images,
+                       const std::map<std::string, Value>& parameters) {
+    auto filter = registry().createFilter(type);
+    std::map<std::string, std::vector<Value>> inputs;
+    for (const auto& [port, buffers] : images)
+        for (const auto& b : buffers) inputs[port].push_back(Value(b));
+    for (const auto& [k, v] : parameters) inputs[k] = {v};
+    FilterRunOptions o;
+    o.registry = &registry();
+    const FilterRunResult warm = runFilter(*filter, inputs, o);
+    std::size_t written = 0;
+    for (const auto& [k, v] : warm.outputs)
+        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b) written += (*b)->channels().size();
+    const std::size_t bytes = std::size_t(size) * size * 4 * (std::size_t(channelsRead) + written);
+    const double copy = memcpySeconds(bytes);
+    double total = 0;
+    for (auto _ : state) {
+        const auto t0 = std::chrono::steady_clock::now();
+        FilterRunResult r = runFilter(*filter, inputs, o);
+        benchmark::DoNotOptimize(r);
+        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    const double per = total / double(state.iterations());
+    state.counters["MP/s"] = double(size) * size / per / 1e6;
+    state.counters["vs_memcpy"] = per / copy;
+    state.counters["bytes"] = double(bytes);
+}
+
 }  // namespace darkroom::bench

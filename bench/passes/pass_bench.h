@@ -25,4 +25,11 @@ BufferPtr syntheticGBuffer(int size);
 void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
              const std::map<std::string, Value>& parameters = {});
 
+// Like runPass, but with the images given per port (several for a `multiple`
+// port such as Compositing's). `channelsRead` counts the float channels read
+// over all inputs together.
+void runPassWithImages(benchmark::State& state, const std::string& type, int size, int channelsRead,
+                       const std::map<std::string, std::vector<BufferPtr>>& images,
+                       const std::map<std::string, Value>& parameters = {});
+
 }  // namespace darkroom::bench

@@ -1,0 +1,15 @@
+#pragma once
+// The output channel list of a composite: every channel of every input, by
+// name, in order of first appearance.
+#include <darkroom/buffer.h>
+
+#include <string>
+#include <vector>
+
+namespace darkroom {
+
+// Throws darkroom::Error (prefixed with `node`) when one name has different
+// types in different inputs, naming the channel, both inputs and both types.
+std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs, const std::string& node);
+
+}  // namespace darkroom

@@ -1,0 +1,155 @@
+#include "compositing.h"
+
+#include "channel_union.h"
+
+#include <darkroom/error.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace darkroom {
+
+namespace {
+
+std::string sizeText(const Buffer& b) { return std::to_string(b.width()) + "x" + std::to_string(b.height()); }
+
+std::string channelList(const Buffer& b) {
+    std::string s;
+    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name;
+    return s.empty() ? std::string("no channels") : s;
+}
+
+// What a pixel that is background in every input holds: transparent black
+// colour (so a composite of ColorMapping outputs stays displayable and matches
+// ColorMapping's own background), NaN ("no data") for other floats, and ~0u
+// for ids, which is what the capture backend writes on background.
+float backgroundFloat(const std::string& name) {
+    if (name == "R" || name == "G" || name == "B" || name == "A") return 0.0f;
+    return std::numeric_limits<float>::quiet_NaN();
+}
+
+// Per output channel, where each input keeps it (nullptr when it lacks it).
+struct ChannelSources {
+    ChannelDesc desc;
+    std::vector<const float*> floats;
+    std::vector<const std::uint32_t*> uints;
+    float* outFloat = nullptr;
+    std::uint32_t* outUInt = nullptr;
+    bool isDepth = false;
+};
+
+}  // namespace
+
+PortList Compositing::ports() const {
+    PortList p;
+    p.imagesIn("images",
+               "G-buffers to merge, any number, all the same size, each with a depth channel; edge order is "
+               "the tie-break order (lower wins)");
+    p.stringIn("depthChannel", "Z", "Float channel holding planar depth (+inf or NaN = background)");
+    p.imageOut("image",
+               "Per pixel every channel of the nearest input; the union of the inputs' channels; the first "
+               "input's camera");
+    return p;
+}
+
+void Compositing::execute(Context& ctx) {
+    const std::string node = "Compositing '" + ctx.nodeName() + "'";
+    const std::vector<BufferPtr> inputs = ctx.images("images");
+    if (inputs.empty()) throw Error(node + ": no input connected to 'images'; connect at least one G-buffer");
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (!inputs[i]) throw Error(node + ": input " + std::to_string(i) + " on 'images' holds no image");
+    // One input has nothing to merge with: forward it untouched.
+    if (inputs.size() == 1) {
+        ctx.setOutput("image", inputs[0]);
+        return;
+    }
+
+    const std::string& depthName = ctx.getString("depthChannel");
+    const Buffer& first = *inputs[0];
+    std::vector<const float*> depth(inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const Buffer& b = *inputs[i];
+        if (b.width() != first.width() || b.height() != first.height())
+            throw Error(node + ": input " + std::to_string(i) + " is " + sizeText(b) + " but input 0 is " +
+                        sizeText(first) + "; all inputs must have the same size (use Resize)");
+        depth[i] = b.hostFloat(depthName);
+        if (!depth[i])
+            throw Error(node + ": input " + std::to_string(i) + " has no float32 depth channel '" + depthName +
+                        "'; it has " + channelList(b));
+        if (b.metadata().camera != first.metadata().camera)
+            ctx.warn(node + ": input " + std::to_string(i) +
+                     " was rendered with another camera than input 0; the output keeps input 0's camera");
+    }
+
+    const std::vector<ChannelDesc> channels = channelUnion(inputs, node);
+    const int w = first.width(), h = first.height();
+    auto out = ctx.allocate(w, h, channels);
+    out->metadata() = first.metadata();
+
+    std::vector<ChannelSources> sources;
+    for (const ChannelDesc& c : channels) {
+        ChannelSources s;
+        s.desc = c;
+        s.isDepth = c.name == depthName;
+        for (const BufferPtr& b : inputs) {
+            s.floats.push_back(c.type == ChannelType::Float32 ? b->hostFloat(c.name) : nullptr);
+            s.uints.push_back(c.type == ChannelType::UInt32 ? b->hostUInt(c.name) : nullptr);
+        }
+        if (c.type == ChannelType::Float32)
+            s.outFloat = out->hostFloat(c.name);
+        else
+            s.outUInt = out->hostUInt(c.name);
+        sources.push_back(std::move(s));
+    }
+
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::uint32_t noId = 0xFFFFFFFFu;
+    const int n = int(inputs.size());
+    // Row by row: choose the winners of a row, then copy each channel of it,
+    // so the depths and the winner list stay in cache.
+    ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+        std::vector<int> winner(std::size_t(w), -1);
+        for (int y = y0; y < y1; ++y) {
+            const std::size_t row = std::size_t(y) * std::size_t(w);
+            for (int x = 0; x < w; ++x) {
+                float best = inf;
+                int who = -1;
+                for (int k = 0; k < n; ++k) {
+                    const float z = depth[std::size_t(k)][row + std::size_t(x)];
+                    // Strictly nearer: ties keep the lower index; +inf, -inf and NaN never win.
+                    if (z < best && std::isfinite(z)) {
+                        best = z;
+                        who = k;
+                    }
+                }
+                winner[std::size_t(x)] = who;
+            }
+            for (ChannelSources& s : sources) {
+                if (s.outFloat) {
+                    const float bg = s.isDepth ? inf : backgroundFloat(s.desc.name);
+                    for (int x = 0; x < w; ++x) {
+                        const int k = winner[std::size_t(x)];
+                        const std::size_t i = row + std::size_t(x);
+                        const float* src = k < 0 ? nullptr : s.floats[std::size_t(k)];
+                        s.outFloat[i] = k < 0 ? bg : (src ? src[i] : nan);
+                    }
+                } else {
+                    for (int x = 0; x < w; ++x) {
+                        const int k = winner[std::size_t(x)];
+                        const std::size_t i = row + std::size_t(x);
+                        const std::uint32_t* src = k < 0 ? nullptr : s.uints[std::size_t(k)];
+                        s.outUInt[i] = src ? src[i] : noId;
+                    }
+                }
+            }
+        }
+    });
+    if (ctx.cancelled()) return;
+    ctx.progress(1.0);
+    ctx.setOutput("image", BufferPtr(std::move(out)));
+}
+
+}  // namespace darkroom
