@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <limits>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -106,4 +107,41 @@ TEST(CinemaReader, NoMatchNamesTheDatabaseAndListsValues) {
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("no-such.cdb"));
     }
+}
+
+TEST(CinemaReader, ReadsOneComposableLayerAsOneBuffer) {
+    const auto db = test::sharedData("cinema/ttk_extracts_001.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto r = readEntry(db, "object=012");
+    const auto& image = r.outputs.at("image").asImage();
+    ASSERT_TRUE(image);
+    EXPECT_EQ(image->channelNames(), (std::vector<std::string>{"Z", "Elevation", "SSSAO"}));
+    EXPECT_EQ(image->width(), 1024);
+    EXPECT_THAT(image->metadata().attributes.at("colormap.Elevation"), HasSubstr("blackbody.json"));
+    EXPECT_EQ(image->requireFloat("Z")[0], std::numeric_limits<float>::infinity());  // corner is background
+    ASSERT_EQ(r.warnings.size(), 1u);  // the depth conversion, stated once
+    EXPECT_THAT(r.warnings[0], HasSubstr("normalised"));
+    // SQL picks the layer too; a selection of both layers is refused with the choices.
+    const auto sql = readEntry(db, "object > 5").outputs.at("image").asImage();
+    EXPECT_EQ(sql->metadata().attributes.at("cis.layer"), "l001");
+    try {
+        readEntry(db, "CISChannel = 'CISDepth'");
+        ADD_FAILURE() << "two layers were merged";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("CISImage=i000, CISLayer=l000"));
+    }
+}
+
+TEST(CinemaReader, SqlParametersPickTheFirstMatchingEntry) {
+    const auto db = test::sharedData("cinema/sphere.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto r = readEntry(db, "phi > -170 AND phi < -150");
+    EXPECT_TRUE(samePixels(*r.outputs.at("image").asImage(), *readImage(db + "/image/-162/0.png")));
+}
+
+TEST(CinemaReader, PeriodicPictureWithFileFirstAndSpacesAfterCommas) {
+    const auto db = test::sharedData("cinema/periodicPicture.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    const auto r = readEntry(db, "angle=7.2");
+    EXPECT_TRUE(samePixels(*r.outputs.at("image").asImage(), *readImage(db + "/data/pic32.0002.png")));
 }
