@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace darkroom {
@@ -28,6 +29,18 @@ std::string channelList(const Buffer& b) {
 float backgroundFloat(const std::string& name) {
     if (name == "R" || name == "G" || name == "B" || name == "A") return 0.0f;
     return std::numeric_limits<float>::quiet_NaN();
+}
+
+// Whether two cameras show the same rays. Camera::operator== also compares the
+// field of the unused projection (a perspective camera still carries a
+// viewHeight, which capture derives from the scene's bounds), so it would flag
+// captures of different objects from one viewpoint.
+bool sameView(const std::optional<Camera>& a, const std::optional<Camera>& b) {
+    if (!a || !b) return a.has_value() == b.has_value();
+    const bool perspective = a->projection == Camera::Projection::Perspective;
+    return a->position == b->position && a->forward == b->forward && a->up == b->up &&
+           a->projection == b->projection && a->width == b->width && a->height == b->height &&
+           (perspective ? a->fovYDegrees == b->fovYDegrees : a->viewHeight == b->viewHeight);
 }
 
 // Per output channel, where each input keeps it (nullptr when it lacks it).
@@ -78,7 +91,7 @@ void Compositing::execute(Context& ctx) {
         if (!depth[i])
             throw Error(node + ": input " + std::to_string(i) + " has no float32 depth channel '" + depthName +
                         "'; it has " + channelList(b));
-        if (b.metadata().camera != first.metadata().camera)
+        if (!sameView(b.metadata().camera, first.metadata().camera))
             ctx.warn(node + ": input " + std::to_string(i) +
                      " was rendered with another camera than input 0; the output keeps input 0's camera");
     }
