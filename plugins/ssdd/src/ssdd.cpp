@@ -14,7 +14,7 @@ PortList Ssdd::ports() const {
     PortList p;
     p.imageIn("image", "Depth Z (planar view depth, +inf background) with its camera in the metadata",
               {"Z"});
-    p.floatIn("strength", 1.0, 0.0, 100.0,
+    p.floatIn("strength", 0.5, 0.0, 100.0,
               "Darkening per unit of depth difference, measured in the world size of sigma at the "
               "pixel's depth: factor = exp(-strength * max(0, -dD) / sigmaWorld)");
     p.floatIn("sigma", 0.01, 0.0, 512.0,

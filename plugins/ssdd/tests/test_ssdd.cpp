@@ -82,7 +82,7 @@ TEST(Ssdd, StrongerAndWiderDarkensMore) {
 TEST(Ssdd, SigmaAsAFractionOfTheImageHeightEqualsPixels) {
     const BufferPtr img = step(60, 20, 30);
     const BufferPtr a = runPass("SSDD", img, pixels(2.0));
-    const BufferPtr b = runPass("SSDD", img, {{"sigma", {Value(0.1)}}, {"sigmaUnits", {Value("imageHeight")}}});
+    const BufferPtr b = runPass("SSDD", img, {{"sigma", {Value(0.1)}}, {"sigmaUnits", {Value("imageHeight")}}, {"strength", {Value(1.0)}}});
     EXPECT_TRUE(identical(*a, *b));
 }
 
