@@ -1,0 +1,25 @@
+#include "pass_bench.h"
+
+// SSAO reads Z only (normals are reconstructed) and writes AO; the pass also
+// copies every input channel through, which the memcpy baseline does not count.
+static void ssao(benchmark::State& state, const char* method, int quality1, int quality2) {
+    std::map<std::string, darkroom::Value> p{{"method", darkroom::Value(method)}};
+    if (std::string(method) == "hemisphere") {
+        p["samples"] = darkroom::Value(std::int64_t(quality1));
+    } else {
+        p["slices"] = darkroom::Value(std::int64_t(quality1));
+        p["steps"] = darkroom::Value(std::int64_t(quality2));
+    }
+    darkroom::bench::runPass(state, "SSAO", int(state.range(0)), 1, p);
+}
+
+static void BM_SSAO_Hemisphere8(benchmark::State& s) { ssao(s, "hemisphere", 8, 0); }
+static void BM_SSAO_Hemisphere16(benchmark::State& s) { ssao(s, "hemisphere", 16, 0); }
+static void BM_SSAO_Hemisphere32(benchmark::State& s) { ssao(s, "hemisphere", 32, 0); }
+static void BM_SSAO_Horizon2x4(benchmark::State& s) { ssao(s, "horizon", 2, 4); }
+static void BM_SSAO_Horizon4x8(benchmark::State& s) { ssao(s, "horizon", 4, 8); }
+BENCHMARK(BM_SSAO_Hemisphere8)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SSAO_Hemisphere16)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SSAO_Hemisphere32)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SSAO_Horizon2x4)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SSAO_Horizon4x8)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond)->UseRealTime();
