@@ -90,7 +90,7 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                                "Run once per entry of the Cinema database read by NODE (a CinemaReader); "
                                "output paths get the entry's parameters, or replace {entry}")
                    ->type_name("NODE");
-    cmd->add_option("--where", a->where, "With --foreach: only entries matching, e.g. \"theta=0, phi=30\"")
+    cmd->add_option("--where", a->where, "With --foreach: only entries matching, e.g. \"theta=0, phi=30\" or SQL \"phi > 0 AND theta = 0\"")
         ->needs(fe)
         ->type_name("QUERY");
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
@@ -138,7 +138,7 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                     if (a->where.empty())
                         for (std::size_t r = 0; r < db.rowCount(); ++r) rows.push_back(r);
                     else
-                        rows = db.select(CinemaDatabase::parseQuery(a->where));
+                        rows = db.selectWhere(a->where);
                     if (rows.empty()) {
                         reportError(dbPath.string() + ": no entry matches '" + a->where + "'");
                         return int(kBadInput);
