@@ -1,0 +1,21 @@
+#pragma once
+// Runs the built `darkroom` executable and captures exit code, stdout, stderr.
+#include <string>
+#include <vector>
+
+namespace darkroom::test {
+
+struct ProcessResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+// `args` are passed verbatim (no shell); `env` entries are NAME=VALUE added to
+// a copy of the environment with DARKROOM_PLUGIN_PATH cleared.
+ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
+
+// Starts the runner without waiting (output discarded); returns its pid.
+int spawnDarkroom(const std::vector<std::string>& args);
+
+}  // namespace darkroom::test
