@@ -47,6 +47,16 @@ std::string formatDouble(double d) {
     return s;
 }
 
+// Colours are float32: print the shortest text that reads back as the same float.
+std::string formatFloat(float f) {
+    if (!std::isfinite(f)) return formatDouble(f);
+    char buf[64];
+    auto r = std::to_chars(buf, buf + sizeof buf, f);
+    std::string s(buf, r.ptr);
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    return s;
+}
+
 bool parseDouble(std::string_view t, double& out) {
     const std::string s = trim(t);
     if (s == "nan" || s == "NaN" || s == "NAN" || s == ".nan" || s == ".NaN") {
@@ -163,8 +173,8 @@ std::string formatValue(PortType type, const Value& v) {
         case PortType::Bool: return v.asBool() ? "true" : "false";
         case PortType::Color: {
             const Color c = v.asColor();
-            return "[" + formatDouble(c.r) + ", " + formatDouble(c.g) + ", " + formatDouble(c.b) +
-                   ", " + formatDouble(c.a) + "]";
+            return "[" + formatFloat(c.r) + ", " + formatFloat(c.g) + ", " + formatFloat(c.b) + ", " +
+                   formatFloat(c.a) + "]";
         }
         case PortType::Vec3: {
             const Vec3 p = v.asVec3();
