@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the example gallery: captures the demo scene (if out/demo is
 # missing), then runs every pipeline in docs/examples/*.yaml, writing its
-# pictures into docs/gallery/. Each example writes <name>.png.
+# pictures into docs/gallery/. Each example writes <name>.png (scaled to 512
+# pixels wide).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
@@ -16,6 +17,8 @@ status=0
 for pipeline in "$root"/docs/examples/*.yaml; do
   name=$(basename "$pipeline" .yaml)
   if "$darkroom" run "$pipeline" --output "$root/docs/gallery"; then
+    # Keep the committed pictures small.
+    oiiotool "$root/docs/gallery/$name.png" --resize 512x0 -o "$root/docs/gallery/$name.png"
     echo "rendered $name"
   else
     echo "FAILED: $name" >&2
