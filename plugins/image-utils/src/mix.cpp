@@ -36,8 +36,7 @@ PortList Mix::ports() const {
               {"R", "G", "B"});
     p.optionalImageIn("other",
                       "multiply: the image holding factorChannel (unconnected: taken from 'image'); blend, over, "
-                      "add: the second colour R, G, B (and A); same size as 'image'",
-                      {"AO"});
+                      "add: the second colour R, G, B (and A); same size as 'image'");
     p.enumIn("mode", {"multiply", "blend", "over", "add"}, "multiply",
              "multiply: RGB *= mix(1, factor, amount); blend: mix(image, other, amount) on R, G, B, A; over: "
              "'other' composited over 'image' with other's alpha times amount; add: RGB += amount * other");

@@ -48,6 +48,8 @@ Fixture fixtureFor(const std::string& type) {
         };
     if (type == "ImageWriter")
         return [](const test::TempDir& dir, auto& in) { in["path"] = {Value(dir.file("out.exr"))}; };
+    if (type == "Mix")  // the factor channel is a parameter; the synthetic image has "value"
+        return [](const test::TempDir&, auto& in) { in["factorChannel"] = {Value("value")}; };
     if (type == "CinemaReader")
         return [](const test::TempDir& dir, auto& in) {
             CinemaWriter w(dir.file("tiny.cdb"), {"phi"});
