@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/error.h>
 #include <darkroom/export.h>
 #include <darkroom/framework/graph.h>
 
