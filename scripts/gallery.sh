@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Renders the example gallery: captures the demo scene (if out/demo is
 # missing), then runs every pipeline in docs/examples/*.yaml, writing its
-# pictures into docs/gallery/. Each example writes <name>.png (scaled to 512
-# pixels wide).
+# pictures into docs/gallery/ (scaled to 512 pixels wide).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
@@ -17,12 +16,14 @@ status=0
 for pipeline in "$root"/docs/examples/*.yaml; do
   name=$(basename "$pipeline" .yaml)
   if "$darkroom" run "$pipeline" --output "$root/docs/gallery"; then
-    # Keep the committed pictures small.
-    oiiotool "$root/docs/gallery/$name.png" --resize 512x0 -o "$root/docs/gallery/$name.png"
     echo "rendered $name"
   else
     echo "FAILED: $name" >&2
     status=1
   fi
+done
+# Keep the committed pictures small.
+for png in "$root"/docs/gallery/*.png; do
+  oiiotool "$png" --resize 512x0 -o "$png"
 done
 exit $status
