@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -110,4 +111,42 @@ TEST(CaptureCli, KilledThenResumedEqualsUninterrupted) {
         ASSERT_TRUE(after.count(name)) << name;
         EXPECT_TRUE(after.at(name) == bytes) << name << " differs";
     }
+}
+
+TEST(CaptureCli, RunForeachWritesOneOutputPerEntry) {
+    test::TempDir dir;
+    test::writeText(dir.file("s.yaml"), "objects:\n  - generator: isosurface\n    parameters: {resolution: 24}\n"
+                                        "cameras:\n  resolution: [32, 24]\n  grid: {phi: 4, theta: 1}\n");
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("db.cdb")}).exitCode, 0);
+    test::writeText(dir.file("p.yaml"), R"(darkroom: 1
+nodes:
+  reader:
+    type: CinemaReader
+    parameters:
+      database: db.cdb
+  colour:
+    type: ColorMapping
+    parameters:
+      channel: height
+  write:
+    type: ImageWriter
+    parameters:
+      path: frames/view.png
+edges:
+  - reader.image -> colour.image
+  - colour.image -> write.image
+)");
+    const auto all = runDarkroom({"run", dir.file("p.yaml"), "--foreach", "reader", "-o", dir.file("out")});
+    ASSERT_EQ(all.exitCode, 0) << all.err;
+    std::vector<std::string> names;
+    for (const auto& f : fs::directory_iterator(dir.file("out/frames"))) names.push_back(f.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"view_phi=-180_theta=0.png", "view_phi=-90_theta=0.png",
+                                               "view_phi=0_theta=0.png", "view_phi=90_theta=0.png"}));
+    const auto some = runDarkroom({"run", dir.file("p.yaml"), "--foreach", "reader", "--where", "phi > 0", "-o",
+                                   dir.file("sql")});
+    ASSERT_EQ(some.exitCode, 0) << some.err;
+    EXPECT_TRUE(fs::exists(dir.file("sql/frames/view_phi=90_theta=0.png")));
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("sql/frames")), fs::directory_iterator{}), 1);
+    EXPECT_EQ(runDarkroom({"run", dir.file("p.yaml"), "--foreach", "colour"}).exitCode, 2);
 }
