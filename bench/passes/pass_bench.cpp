@@ -69,19 +69,15 @@ BufferPtr syntheticGBuffer(int size) {
     return b;
 }
 
-void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
-             const std::map<std::string, Value>& parameters) {
-    auto filter = registry().createFilter(type);
-    const PortList ports = filter->ports();
-    std::map<std::string, std::vector<Value>> inputs;
-    const BufferPtr g = syntheticGBuffer(size);
-    for (const auto& p : ports.inputs)
-        if (p.type == PortType::Image && !p.optional) inputs[p.name] = {Value(g)};
-    for (const auto& [k, v] : parameters) inputs[k] = {v};
+namespace {
+
+// Times `filter` on `inputs` and sets the counters described in pass_bench.h.
+void timePass(benchmark::State& state, Filter& filter, const std::map<std::string, std::vector<Value>>& inputs,
+              int size, int channelsRead) {
     FilterRunOptions o;
     o.registry = &registry();
     // One warm-up run tells how many channels the pass writes.
-    const FilterRunResult warm = runFilter(*filter, inputs, o);
+    const FilterRunResult warm = runFilter(filter, inputs, o);
     std::size_t written = 0;
     for (const auto& [k, v] : warm.outputs)
         if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b) written += (*b)->channels().size();
@@ -90,7 +86,7 @@ void runPass(benchmark::State& state, const std::string& type, int size, int cha
     double total = 0;
     for (auto _ : state) {
         const auto t0 = std::chrono::steady_clock::now();
-        FilterRunResult r = runFilter(*filter, inputs, o);
+        FilterRunResult r = runFilter(filter, inputs, o);
         benchmark::DoNotOptimize(r);
         total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
@@ -98,6 +94,19 @@ void runPass(benchmark::State& state, const std::string& type, int size, int cha
     state.counters["MP/s"] = double(size) * size / per / 1e6;
     state.counters["vs_memcpy"] = per / copy;
     state.counters["bytes"] = double(bytes);
+}
+
+}  // namespace
+
+void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
+             const std::map<std::string, Value>& parameters) {
+    auto filter = registry().createFilter(type);
+    std::map<std::string, std::vector<Value>> inputs;
+    const BufferPtr g = syntheticGBuffer(size);
+    for (const auto& p : filter->ports().inputs)
+        if (p.type == PortType::Image && !p.optional) inputs[p.name] = {Value(g)};
+    for (const auto& [k, v] : parameters) inputs[k] = {v};
+    timePass(state, *filter, inputs, size, channelsRead);
 }
 
 void runPassWithImages(benchmark::State& state, const std::string& type, int size, int channelsRead,
@@ -108,25 +117,7 @@ void runPassWithImages(benchmark::State& state, const std::string& type, int siz
     for (const auto& [port, buffers] : images)
         for (const auto& b : buffers) inputs[port].push_back(Value(b));
     for (const auto& [k, v] : parameters) inputs[k] = {v};
-    FilterRunOptions o;
-    o.registry = &registry();
-    const FilterRunResult warm = runFilter(*filter, inputs, o);
-    std::size_t written = 0;
-    for (const auto& [k, v] : warm.outputs)
-        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b) written += (*b)->channels().size();
-    const std::size_t bytes = std::size_t(size) * size * 4 * (std::size_t(channelsRead) + written);
-    const double copy = memcpySeconds(bytes);
-    double total = 0;
-    for (auto _ : state) {
-        const auto t0 = std::chrono::steady_clock::now();
-        FilterRunResult r = runFilter(*filter, inputs, o);
-        benchmark::DoNotOptimize(r);
-        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    }
-    const double per = total / double(state.iterations());
-    state.counters["MP/s"] = double(size) * size / per / 1e6;
-    state.counters["vs_memcpy"] = per / copy;
-    state.counters["bytes"] = double(bytes);
+    timePass(state, *filter, inputs, size, channelsRead);
 }
 
 }  // namespace darkroom::bench
