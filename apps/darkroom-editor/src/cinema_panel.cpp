@@ -4,6 +4,7 @@
 
 #include <darkroom/framework/image_io.h>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -145,7 +146,8 @@ void CinemaPanel::startThumbnails() {
             } catch (const std::exception&) {
                 continue;  // not an image readImage knows (.npz, .vti): no thumbnail
             }
-            QMetaObject::invokeMethod(self.data(), [self, stop, r, thumb] {
+            // Posted to the application object: the panel may be gone by now.
+            QMetaObject::invokeMethod(qApp, [self, stop, r, thumb] {
                 if (!self || *stop) return;
                 if (auto* item = self->list_->item(int(r))) item->setIcon(QIcon(QPixmap::fromImage(thumb)));
             }, Qt::QueuedConnection);

@@ -2,7 +2,7 @@
 // The edited pipeline: the Graph, its file, and the undo stack. Every edit
 // goes through edit(), which applies a function to a copy of the graph and
 // pushes a command holding the graph before and after. Copies keep node
-// versions, so undo hands the evaluator a graph whose results it has cached.
+// versions, so undo re-runs only the nodes the undone edit touched.
 #include <darkroom/framework/graph.h>
 
 #include <QObject>

@@ -3,6 +3,8 @@
 // graph on a worker thread with one long-lived Evaluator, so only nodes
 // whose versions changed run again. A new request cancels the one running
 // (Evaluator::cancel) and skips any still queued: only the latest counts.
+// evaluator.h uses darkroom::Error without including its header.
+#include <darkroom/error.h>
 #include <darkroom/framework/evaluator.h>
 
 #include <QObject>

@@ -5,6 +5,8 @@
 
 #include <map>
 
+class QGraphicsPathItem;
+
 namespace darkroom { class Value; }
 
 namespace editor {
@@ -43,9 +45,9 @@ private:
 
     Document* doc_;
     std::map<QString, NodeItem*> nodes_;
-    std::vector<class QGraphicsPathItem*> edges_;
+    std::vector<QGraphicsPathItem*> edges_;
     PortItem* dragFrom_ = nullptr;
-    class QGraphicsPathItem* dragLine_ = nullptr;
+    QGraphicsPathItem* dragLine_ = nullptr;
     bool syncing_ = false;
 };
 

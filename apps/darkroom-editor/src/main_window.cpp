@@ -173,6 +173,11 @@ void MainWindow::scheduleEvaluation() {
         render_->setImage(nullptr);
         return;
     }
+    // Selection and document signals often arrive together for one change;
+    // asking twice would cancel a run only to start the same one again.
+    const QString key = QStringLiteral("%1|%2|%3|%4").arg(g.revision()).arg(target, port, doc_->folder());
+    if (key == lastRequest_ && eval_->busy()) return;
+    lastRequest_ = key;
     eval_->request(g, target, port, doc_->folder());
 }
 

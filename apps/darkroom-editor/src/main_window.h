@@ -80,6 +80,7 @@ private:
     QLabel* timing_;
     QMenu* recentMenu_ = nullptr;
     QString shownNode_;
+    QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
 };
 
 }  // namespace editor

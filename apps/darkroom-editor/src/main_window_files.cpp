@@ -92,13 +92,13 @@ void MainWindow::buildMenus() {
 
 bool MainWindow::openPipeline(const QString& path) {
     QStringList messages;
+    shownNode_.clear();  // a new pipeline starts with its own default view
     const bool ok = doc_->load(path, messages);
     for (const auto& m : messages) logMessage(m);
     if (!ok) {
         statusBar()->showMessage(messages.isEmpty() ? tr("Cannot open %1").arg(path) : messages.front(), 10000);
         return false;
     }
-    shownNode_.clear();
     addRecent(doc_->path());
     graphView_->fitAll();
     statusBar()->showMessage(messages.isEmpty() ? tr("Opened %1").arg(path)

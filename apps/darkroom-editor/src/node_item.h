@@ -8,6 +8,8 @@
 
 #include <map>
 
+class QGraphicsProxyWidget;
+
 namespace editor {
 
 class ParamWidget;
@@ -52,7 +54,7 @@ private:
     QString error_;
     qreal height_ = 0;
     std::map<QString, PortItem*> inputs_, outputs_;
-    std::map<QString, class QGraphicsProxyWidget*> proxies_;
+    std::map<QString, QGraphicsProxyWidget*> proxies_;
     std::map<QString, ParamWidget*> widgets_;
 };
 

@@ -8,6 +8,14 @@
 
 #include <functional>
 
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLineEdit;
+class QPixmap;
+class QPushButton;
+class QSlider;
+
 namespace editor {
 
 class ParamWidget : public QWidget {
@@ -18,7 +26,7 @@ public:
     void setValue(const darkroom::Value& v);  // no edited() signal
     const darkroom::PortSpec& port() const { return port_; }
     // For tests: the slider of a ranged number, else null.
-    class QSlider* slider() const { return slider_; }
+    QSlider* slider() const { return slider_; }
 
 signals:
     void edited(const darkroom::Value& v);
@@ -27,17 +35,17 @@ private:
     void emitText(const QString& text);
     darkroom::PortSpec port_;
     QString baseFolder_;
-    class QSlider* slider_ = nullptr;
-    class QDoubleSpinBox* spin_ = nullptr;
-    class QCheckBox* check_ = nullptr;
-    class QComboBox* combo_ = nullptr;
-    class QLineEdit* line_ = nullptr;
-    class QPushButton* colour_ = nullptr;
+    QSlider* slider_ = nullptr;
+    QDoubleSpinBox* spin_ = nullptr;
+    QCheckBox* check_ = nullptr;
+    QComboBox* combo_ = nullptr;
+    QLineEdit* line_ = nullptr;
+    QPushButton* colour_ = nullptr;
     darkroom::Color colourValue_;
     bool updating_ = false;
 };
 
 // A horizontal strip of a colour map (sRGB-encoded for display).
-class QPixmap colorMapStrip(const std::string& spec, int w, int h);
+QPixmap colorMapStrip(const std::string& spec, int w, int h);
 
 }  // namespace editor
