@@ -103,7 +103,13 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     resize(1500, 900);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // ~QWidget deletes the children before ~QObject drops their connections:
+    // the scene's items then change the selection and would call back into
+    // this half-destroyed window (a use-after-free valgrind showed).
+    scene_->disconnect(this);
+    doc_->disconnect(this);
+}
 
 void MainWindow::logMessage(const QString& text) { log_->appendPlainText(text); }
 
