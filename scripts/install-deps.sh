@@ -10,12 +10,11 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
+  # the editor, and its GUI tests under a virtual X server
+  qt6-base-dev qt6-base-dev-tools libgl-dev xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
 )
-if [ "${DARKROOM_WITH_EDITOR:-0}" = 1 ]; then
-  packages+=(qt6-base-dev libgl-dev xvfb xauth)
-fi
 
 missing=()
 for p in "${packages[@]}"; do
