@@ -9,6 +9,7 @@
 // Usage: bench_capture [--mesh PATH] [--size N] [--threads T] [--reps R] [--camera-json PATH]
 //                      [--shapes] (also time other packet shapes) [--profile METHOD] (for perf record)
 #include "embree_scene.h"
+#include "flush_denormals.h"
 #include "primary_rays.h"
 
 #include <darkroom/capture_backend.h>
@@ -17,8 +18,6 @@
 #include <darkroom/framework/run_filter.h>
 #include <darkroom/framework/scene/mesh_readers.h>
 #include <embree3/rtcore.h>
-#include <pmmintrin.h>
-#include <xmmintrin.h>
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +35,7 @@
 #include <vector>
 
 using namespace darkroom;
+using darkroom::embree::FlushDenormals;
 
 namespace {
 
@@ -102,18 +102,6 @@ Camera frame(const Scene& scene, int size) {
     c.width = c.height = size;
     return c;
 }
-
-class FlushDenormals {
-public:
-    FlushDenormals() : saved_(_mm_getcsr()) {
-        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    }
-    ~FlushDenormals() { _mm_setcsr(saved_); }
-
-private:
-    unsigned saved_;
-};
 
 void traceSingle(RTCScene scene, RTCIntersectContext* ic, const embree::PrimaryRays& rays, int x, int y,
                  float* out) {

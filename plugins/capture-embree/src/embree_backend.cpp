@@ -1,13 +1,12 @@
 #include "embree_backend.h"
 
 #include "embree_scene.h"
+#include "flush_denormals.h"
 #include "gbuffer_writer.h"
 #include "primary_rays.h"
 
 #include <darkroom/error.h>
 #include <embree3/rtcore.h>
-#include <xmmintrin.h>
-#include <pmmintrin.h>
 
 #include <cmath>
 #include <limits>
@@ -25,20 +24,6 @@ constexpr int kTile = 16;
 constexpr int kPacketW = 4;
 constexpr int kPacketH = 2;
 static_assert(kPacketW * kPacketH == 8 && kTile % kPacketW == 0 && kTile % kPacketH == 0);
-
-// Embree recommends flush-to-zero and denormals-are-zero for speed. The
-// worker threads belong to the host, so the previous mode is restored.
-class FlushDenormals {
-public:
-    FlushDenormals() : saved_(_mm_getcsr()) {
-        _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-        _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    }
-    ~FlushDenormals() { _mm_setcsr(saved_); }
-
-private:
-    unsigned saved_;
-};
 
 class EmbreeBackend final : public CaptureBackend {
 public:
