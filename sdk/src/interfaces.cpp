@@ -10,6 +10,16 @@ namespace darkroom {
 
 Filter::~Filter() = default;
 CaptureBackend::~CaptureBackend() = default;
+
+BufferPtr CaptureBackend::trace(const RayBatch&, const CaptureRequest&, Context&) {
+    throw Error("this capture backend cannot trace arbitrary rays (CaptureBackend::trace), so it cannot "
+                "compute ray-traced references; use the 'embree' backend");
+}
+
+void CaptureBackend::occluded(const RayBatch&, std::vector<std::uint8_t>&, Context&) {
+    throw Error("this capture backend cannot answer occlusion queries (CaptureBackend::occluded), so it "
+                "cannot compute ray-traced references; use the 'embree' backend");
+}
 Registrar::~Registrar() = default;
 Context::~Context() = default;
 
