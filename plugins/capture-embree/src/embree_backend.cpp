@@ -67,7 +67,117 @@ public:
         return buffer;
     }
 
+    BufferPtr trace(const RayBatch& rays, const CaptureRequest& request, Context& ctx) override {
+        if (!bvh_) throw Error("embree capture: trace() called before setScene()");
+        const std::size_t n = checkBatch(rays, "trace");
+        auto buffer = ctx.allocate(int(n), 1, GBufferWriter::channels(request));
+        buffer->metadata().attributes["units.Z"] = "ray parameter";
+        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        RTCScene scene = bvh_->handle();
+        const int packets = int((n + 7) / 8);
+        ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {
+            const FlushDenormals ftz;
+            RTCIntersectContext ic;
+            rtcInitIntersectContext(&ic);
+            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            alignas(32) RTCRayHit8 rh;
+            alignas(32) int valid[8];
+            for (int p = begin; p < end; ++p) {
+                if (ctx.cancelled()) return;
+                const std::size_t first = std::size_t(p) * 8;
+                loadPacket(rays, first, n, rh.ray, valid);
+                for (int k = 0; k < 8; ++k) {
+                    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+                }
+                rtcIntersect8(valid, scene, &ic, &rh);
+                for (int k = 0; k < 8; ++k) {
+                    if (!valid[k]) continue;
+                    const std::size_t i = first + std::size_t(k);
+                    if (rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+                        writer.miss(i);
+                        continue;
+                    }
+                    const SurfaceHit h{rh.ray.tfar[k], rh.hit.geomID[k], rh.hit.primID[k], rh.hit.u[k], rh.hit.v[k],
+                                       {rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]}};
+                    writer.hit(i, h, &rays.origins[3 * i], &rays.directions[3 * i]);
+                }
+            }
+        });
+        if (ctx.cancelled()) throw Cancelled();
+        return buffer;
+    }
+
+    void occluded(const RayBatch& rays, std::vector<std::uint8_t>& hit, Context& ctx) override {
+        if (!bvh_) throw Error("embree capture: occluded() called before setScene()");
+        const std::size_t n = checkBatch(rays, "occluded");
+        hit.assign(n, 0);
+        RTCScene scene = bvh_->handle();
+        const int packets = int((n + 7) / 8);
+        ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {
+            const FlushDenormals ftz;
+            RTCIntersectContext ic;
+            rtcInitIntersectContext(&ic);
+            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            alignas(32) RTCRay8 ray;
+            alignas(32) int valid[8];
+            for (int p = begin; p < end; ++p) {
+                if (ctx.cancelled()) return;
+                const std::size_t first = std::size_t(p) * 8;
+                loadPacket(rays, first, n, ray, valid);
+                rtcOccluded8(valid, scene, &ic, &ray);
+                // Embree marks an occluded ray by setting tfar to -inf.
+                for (int k = 0; k < 8; ++k)
+                    if (valid[k] && ray.tfar[k] < 0.0f) hit[first + std::size_t(k)] = 1;
+            }
+        });
+        if (ctx.cancelled()) throw Cancelled();
+    }
+
 private:
+    // 64 packets (512 rays) per task: enough work to amortise scheduling,
+    // small enough to balance across threads for batches of a few thousand.
+    static constexpr int kBatchPacketsPerTask = 64;
+
+    static std::size_t checkBatch(const RayBatch& rays, const char* what) {
+        const std::size_t n = rays.size();
+        if (rays.origins.size() != 3 * n || rays.directions.size() != rays.origins.size())
+            throw Error(std::string("embree capture: ") + what + "(): the ray batch has " +
+                        std::to_string(rays.origins.size()) + " origin and " +
+                        std::to_string(rays.directions.size()) +
+                        " direction components; expected 3 of each per ray");
+        if (!rays.tFar.empty() && rays.tFar.size() != n)
+            throw Error(std::string("embree capture: ") + what + "(): the ray batch has " +
+                        std::to_string(rays.tFar.size()) + " tFar values for " + std::to_string(n) +
+                        " rays; expected one per ray or none");
+        if (n == 0 || n > std::size_t(std::numeric_limits<int>::max()))
+            throw Error(std::string("embree capture: ") + what + "(): a ray batch needs 1 to " +
+                        std::to_string(std::numeric_limits<int>::max()) + " rays, got " + std::to_string(n));
+        return n;
+    }
+
+    // Fills the 8 lanes from rays [first, first + 8); lanes past the end are
+    // switched off.
+    static void loadPacket(const RayBatch& rays, std::size_t first, std::size_t n, RTCRay8& r, int valid[8]) {
+        for (int k = 0; k < 8; ++k) {
+            const std::size_t i = first + std::size_t(k);
+            valid[k] = i < n ? -1 : 0;
+            const std::size_t j = i < n ? i : first;
+            r.org_x[k] = rays.origins[3 * j];
+            r.org_y[k] = rays.origins[3 * j + 1];
+            r.org_z[k] = rays.origins[3 * j + 2];
+            r.dir_x[k] = rays.directions[3 * j];
+            r.dir_y[k] = rays.directions[3 * j + 1];
+            r.dir_z[k] = rays.directions[3 * j + 2];
+            r.tnear[k] = rays.tNear;
+            r.tfar[k] = rays.tFar.empty() ? std::numeric_limits<float>::infinity() : rays.tFar[j];
+            r.time[k] = 0.0f;
+            r.mask[k] = 0xFFFFFFFFu;
+            r.id[k] = unsigned(k);
+            r.flags[k] = 0;
+        }
+    }
+
     static void traceTile(RTCScene scene, RTCIntersectContext* ic, const PrimaryRays& rays,
                           const GBufferWriter& writer, int width, int height, int x0, int y0) {
         alignas(32) RTCRayHit8 rh;
