@@ -44,7 +44,8 @@ struct AoOptions {
 // with "Z" (planar depth, +inf on background), "AO" (the mean visibility of
 // `samples` independent rays, 1 on background) and "AO.stderr" (the standard
 // error of that mean, s / sqrt(N) with s the sample standard deviation; 0 on
-// background), and the camera in its metadata. Rays leave the hit point
+// background, NaN when samples = 1), and the camera in its metadata. A hit
+// without a usable normal gets NaN in both. Rays leave the hit point
 // lifted by a small offset along the geometric normal, which faces the camera.
 // Throws darkroom::Error on bad options.
 DARKROOM_API BufferPtr ambientOcclusion(CaptureBackend& backend, const Camera& camera,
