@@ -60,7 +60,7 @@ void buildGyroid(StressScene& s, double, const Options& o) {
         f.values.push_back(float(length(p)));
     }
     obj.fields.push_back(std::move(f));
-    const double dist = 22.0;
+    const double dist = 18.0;  // the cube's corners just inside the view
     s.camera = lookAt(normalize(Vec3{1.0, 0.8, 1.2}) * dist, {0, 0, 0}, {0, 1, 0}, o.width, o.height);
     auto scene = std::make_shared<Scene>();
     scene->objects.push_back(std::move(obj));

@@ -56,9 +56,12 @@ void buildPlane(StressScene& s, double, const Options& o) {
 
 void buildCorner(StressScene& s, double, const Options& o) {
     // Floor y = 0 (z >= 0) and wall z = 0 (y >= 0), 100 units wide and 50
-    // deep, seen from 8 units at 45 degrees: the AO radius of 1 spans about
-    // 12% of the image height at the joint.
-    s.camera = lookAt({0, 8 * std::sqrt(0.5), 8 * std::sqrt(0.5)}, {0, 0, 0}, kUp, o.width, o.height);
+    // deep, seen from 8 units at 40 degrees above the floor (so floor and
+    // wall are lit differently): the AO radius of 1 spans 11-13% of the
+    // image height at the joint, and the top of the view meets the wall
+    // 2.9 units up.
+    const double elevation = 40.0 * kPi / 180.0;
+    s.camera = lookAt(Vec3{0, std::sin(elevation), std::cos(elevation)} * 8.0, {0, 0, 0}, kUp, o.width, o.height);
     s.colorField = "distance";
     // Distance to the joint line, clamped at 8 (a grid node, so the
     // interpolated field equals the function exactly).

@@ -154,7 +154,7 @@ void buildStaircase(StressScene& s, double knob, const Options& o) {
     // are at least 1.5 step heights deep so that, from 50 degrees above,
     // part of every tread shows.
     const Vec3 target{0, -0.5 * steps * h, -0.5 * steps * d};
-    const double span = 0.5 * std::hypot(steps * d, steps * h), dist = span / std::tan(20.0 * kPi / 180.0) * 1.1;
+    const double span = 0.5 * std::hypot(steps * d, steps * h), dist = span / std::tan(20.0 * kPi / 180.0) * 0.8;
     const double elevation = 50.0 * kPi / 180.0;
     s.camera = lookAt(target + Vec3{0, std::sin(elevation), std::cos(elevation)} * dist, target, {0, 1, 0}, o.width,
                       o.height);
