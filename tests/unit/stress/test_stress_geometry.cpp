@@ -155,7 +155,7 @@ TEST_P(EveryFamily, SweepMakesEveryListedValueWithDistinctNames) {
 // The analytic AO, where given, is 1 on unoccluded planes and at most 1.
 TEST_P(EveryFamily, AnalyticAoIsAVisibility) {
     const StressScene s = stress::make(GetParam(), stress::knobValues(GetParam()).front(), small());
-    if (!s.analyticAo) GTEST_SKIP() << "no closed form for " << GetParam();
+    if (!s.analyticAo) return;  // which families have one: test_stress_analytic_ao.cpp
     for (const auto& o : s.scene->objects)
         for (std::size_t i = 0; i < o.vertexCount(); i += 7) {
             const double ao = s.analyticAo(vertex(o, i), s.aoRadius, reference::AoWeighting::Cosine);
