@@ -160,10 +160,80 @@ def cinema_table(d):
     return "\n".join(out)
 
 
+def _bpp_range(values):
+    values = [v for v in values if v is not None]
+    if not values:
+        return "–"
+    lo, hi = min(values), max(values)
+    return f"{lo:.2f}" if abs(hi - lo) < 0.005 else f"{lo:.2f}–{hi:.2f}"
+
+
+def summary_bytes(scenes):
+    """Bytes per pixel of each channel, lowest–highest over the scenes."""
+    rows = [("Z", "Z (float32)"), ("scalar", "scalar"), ("N", "N.x N.y N.z"), ("objectId", "objectId"),
+            ("entry", "**whole entry**")]
+    out = ["| bytes per pixel | " + " | ".join(VARIANT_TITLES) + " |", "|---|" + "---:|" * len(VARIANTS)]
+    for setting, title in rows:
+        cells = [_bpp_range([_get(d, v, setting, "bytes_per_pixel") for d in scenes.values()]) for v in VARIANTS]
+        out.append(f"| {title} | " + " | ".join(cells) + " |")
+    cells = ["–"] * 3 + [_bpp_range([_get(d, f"{v} (Z as half)", "Z", "bytes_per_pixel") for d in scenes.values()])
+                         for v in VARIANTS[3:]]
+    out.append("| Z as half (not written by darkroom) | " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
+def summary_normals(scenes):
+    """Per scene: what storing N as half costs against reconstructing it."""
+    out = ["| scene | N half (ZIP) bytes/px | N half p95 all (°) | extrapolated median / p95 interior (°) | "
+           "extrapolated median / p95 edge (°) | edge pixels | extrapolated > 5° (all) |",
+           "|---|---:|---:|---:|---:|---:|---:|"]
+    for scene, d in scenes.items():
+        if _get(d, "extrapolated", "captured", "angle_median") is None:
+            continue
+        share = _get(d, "extrapolated", "captured", "share_above_5")
+        edge = _get(d, "central", "captured", "pixels", "edge")
+        valid = edge + _get(d, "central", "captured", "pixels", "interior")
+        out.append(f"| {scene} | {_num(_get(d, 'zip half', 'N', 'bytes_per_pixel'))} | "
+                   f"{_num(_get(d, 'N half', 'zip half', 'angle_p95'))} | "
+                   f"{_num(_get(d, 'extrapolated', 'captured', 'angle_median', 'interior'))} / "
+                   f"{_num(_get(d, 'extrapolated', 'captured', 'angle_p95', 'interior'))} | "
+                   f"{_num(_get(d, 'extrapolated', 'captured', 'angle_median', 'edge'))} / "
+                   f"{_num(_get(d, 'extrapolated', 'captured', 'angle_p95', 'edge'))} | "
+                   f"{100 * edge / valid:.0f} % | {100 * share:.1f} % |")
+    return "\n".join(out)
+
+
+SHIFTS = [(0, "scalar"), (1, "scalar + 1 ranges"), (4, "scalar + 4 ranges"), (16, "scalar + 16 ranges"),
+          (64, "scalar + 64 ranges")]
+
+
+def summary_half(scenes):
+    """Largest error of half scalars in 8-bit colour-map steps (1/255 of the
+    range), the field as captured and shifted by k ranges."""
+    out = ["| scene | " + " | ".join("as captured" if k == 0 else f"+{k} ranges" for k, _ in SHIFTS) + " |",
+           "|---|" + "---:|" * len(SHIFTS)]
+    for scene, d in scenes.items():
+        cells = []
+        for _, setting in SHIFTS:
+            e = _get(d, "zip half", setting, "max_error_of_range")
+            cells.append("–" if e is None else f"{255 * e:.2f}")
+        out.append(f"| {scene} | " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
 def table(csv_path):
-    """All tables, per scene, as Markdown."""
+    """Summaries over the scenes, then all tables per scene, as Markdown."""
+    scenes = _load(csv_path)
+    images = OrderedDict((k, v) for k, v in scenes.items() if k != "cinema")
     parts = []
-    for scene, d in _load(csv_path).items():
+    if images:
+        parts.append("### All scenes\n\nBytes per pixel (entry size = this × pixels), lowest–highest over "
+                     f"{', '.join(images)}:\n\n{summary_bytes(images)}\n\n"
+                     "Normals: stored as half against reconstructed from Z (`extrapolated`, the Normals "
+                     f"default):\n\n{summary_normals(images)}\n\n"
+                     "Half scalars: largest error in 8-bit colour-map steps (1/255 of the field's range), the "
+                     f"field as captured and shifted by k ranges:\n\n{summary_half(images)}")
+    for scene, d in scenes.items():
         if scene == "cinema":
             parts.append("### Cinema database (`darkroom capture`, docs/examples/demo/surface.yaml)\n\n"
                          + cinema_table(d))

@@ -243,24 +243,40 @@ private:
 
     // Half scalars against float: the largest error as a share of the field's
     // range (a colour map step at 8 bits is 1/255 of it) and whether NaN (no
-    // data) stays NaN.
+    // data) stays NaN. Half keeps 11 significant bits relative to the value,
+    // not the range, so the field is also stored shifted by k ranges (a
+    // temperature in kelvin, a height above sea level) to show where half
+    // stops being safe.
     void measureScalarHalf() {
-        const float* a = gbuffer_->requireFloat(s_.colorField);
-        const float* b = scalarHalf_->requireFloat(s_.colorField);
         const double range = s_.fieldMax - s_.fieldMin;
-        double maxErr = 0, sumSq = 0;
-        std::size_t n = 0, nanMismatch = 0;
-        for (std::size_t p = 0; p < gbuffer_->pixelCount(); ++p) {
-            if (std::isnan(a[p]) != std::isnan(b[p])) ++nanMismatch;
-            if (!std::isfinite(a[p]) || !std::isfinite(b[p])) continue;
-            const double e = std::abs(double(a[p]) - double(b[p])) / range;
-            maxErr = std::max(maxErr, e);
-            sumSq += e * e;
-            ++n;
+        const Variant zipHalf{"zip", true};
+        for (const double k : {0.0, 1.0, 4.0, 16.0, 64.0}) {
+            const auto shifted = subset(*gbuffer_, {s_.colorField}, {"field"});
+            float* f = shifted->hostFloat("field");
+            for (std::size_t p = 0; p < shifted->pixelCount(); ++p) f[p] = float(double(f[p]) + k * range);
+            const std::string setting = k == 0 ? "scalar" : "scalar + " + std::to_string(int(k)) + " ranges";
+            const BufferPtr back = k == 0 ? scalarHalf_ : store(*shifted, {}, zipHalf, setting);
+            const float* b = back->requireFloat(k == 0 ? s_.colorField : "field");
+            double maxErr = 0, sumSq = 0;
+            std::size_t n = 0, nanMismatch = 0;
+            for (std::size_t p = 0; p < gbuffer_->pixelCount(); ++p) {
+                if (std::isnan(f[p]) != std::isnan(b[p])) ++nanMismatch;
+                if (!std::isfinite(f[p]) || !std::isfinite(b[p])) continue;
+                const double e = std::abs(double(f[p]) - double(b[p])) / range;
+                maxErr = std::max(maxErr, e);
+                sumSq += e * e;
+                ++n;
+            }
+            Row r = row("zip half", setting, "max_error_of_range", maxErr);
+            r.quality = k;
+            csv_.add(r);
+            r.metric = "rmse_of_range";
+            r.value = n ? std::sqrt(sumSq / double(n)) : 0.0;
+            csv_.add(r);
+            r.metric = "nan_mismatch";
+            r.value = double(nanMismatch);
+            csv_.add(r);
         }
-        csv_.add(row("zip half", "scalar", "max_error_of_range", maxErr));
-        csv_.add(row("zip half", "scalar", "rmse_of_range", n ? std::sqrt(sumSq / double(n)) : 0.0));
-        csv_.add(row("zip half", "scalar", "nan_mismatch", double(nanMismatch)));
     }
 
     void angularRows(const std::string& method, const std::string& setting, const Buffer& normals,
