@@ -115,7 +115,9 @@ TEST(StressRender, DumpImagesWhenAsked) {
         for (const auto& s : stress::sweep(family, o)) {
             const BufferPtr g = capture(*backend, s);
             writeShaded(s, *g, std::string(dir) + "/" + s.name + ".png");
-            std::printf("%-22s coverage %.3f\n", s.name.c_str(), coverage(*g));
+            std::size_t primitives = 0;
+            for (const auto& obj : s.scene->objects) primitives += obj.primitiveCount();
+            std::printf("%-22s coverage %.3f  primitives %zu\n", s.name.c_str(), coverage(*g), primitives);
         }
 }
 

@@ -8,6 +8,16 @@
 // method's error crosses a threshold.
 //
 // Deterministic: the same family, knob value and options give the same scene.
+//
+// Conventions the tests and the harness rely on (docs/stress-scenes.md has
+// the table): every camera is perspective with a 40 degree vertical field of
+// view; the image centre looks at the main subject, whose planar depth is
+// focalDistance (particles: the cloud's centre, where the projected radius is
+// exactly the knob; streamlines: every vertex's radius is width / 2 pixels at
+// its own depth; grazing: where the centre ray meets the plane; stripes: the
+// centre's period is the knob). analyticAo is set for plane, grazing and
+// stripes (1: open planes) and corner (cornerAo of the distance to the other
+// plane).
 #include <darkroom/camera.h>
 #include <darkroom/export.h>
 #include <darkroom/framework/reference.h>
@@ -73,7 +83,8 @@ DARKROOM_API std::vector<StressScene> sweep(const std::string& family, const Opt
 // Cosine- and uniform-weighted AO of a point at distance d from an infinite
 // plane occluder (perpendicular to the receiver's plane) with occluders
 // counted within radius R: the floor-wall corner's closed form.
-//   cosine:  1 - (acos k - k sqrt(1 - k^2)) / pi,   uniform: (1 + k) / 2,   k = min(d / R, 1)
+//   cosine:  1 - (acos k - k sqrt(1 - k^2)) / pi,   uniform: (1 + k) / 2,   k = min(|d| / R, 1)
+// Throws darkroom::Error when R <= 0.
 DARKROOM_API double cornerAo(double distance, double radius, reference::AoWeighting weighting);
 
 }  // namespace darkroom::stress
