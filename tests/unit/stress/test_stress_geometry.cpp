@@ -124,6 +124,21 @@ TEST_P(EveryFamily, CameraSeesTheGeometry) {
     }
 }
 
+// Planes and backdrops reach past the view for wide and tall images too.
+TEST_P(EveryFamily, WideAndTallImagesStayCovered) {
+    const std::string family = GetParam();
+    if (family == "grazing" || family == "border" || family == "gyroid") return;  // background by design
+    for (auto [w, h] : {std::pair{96, 40}, std::pair{40, 96}}) {
+        stress::Options o;
+        o.width = w;
+        o.height = h;
+        for (double knob : stress::knobValues(family)) {
+            const StressScene s = stress::make(family, knob, o);
+            EXPECT_EQ(coverage(*s.scene, s.camera, 12), 1.0) << s.name << " at " << w << " x " << h;
+        }
+    }
+}
+
 TEST_P(EveryFamily, IsDeterministic) {
     const std::string family = GetParam();
     for (double knob : stress::knobValues(family)) {
