@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what Darkroom needs to build and test on Debian 12, from Debian's
 # archive only. As root it installs; otherwise it prints the exact command.
+# Extra package names given as arguments are installed too (scripts that need
+# more than the build, e.g. scripts/accuracy.sh's plotting, pass theirs).
 set -euo pipefail
 
 packages=(
@@ -14,6 +16,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libgl-dev xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  "$@"
 )
 
 missing=()

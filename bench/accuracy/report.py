@@ -1,0 +1,344 @@
+#!/usr/bin/env python3
+"""Turns bench_accuracy's CSV files into docs/accuracy.md's charts and tables.
+
+    report.py --data DIR --images DIR --template accuracy.md.in --out docs/accuracy.md
+
+The template is Markdown with lines of the form `<!-- generated: NAME -->`;
+each is replaced by the block NAME (a table or a list of charts), so the prose
+stays hand-written while every number and picture comes from one run.
+Charts are matplotlib PNGs (Debian's python3-matplotlib).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+# Per sweep: the error metric the speed/error charts and the failure map use,
+# its label, and the threshold above which a method counts as failing.
+SWEEPS = {
+    "ao": {"metric": "rmse", "label": "AO RMSE", "threshold": 0.05},
+    "normals": {"metric": "angle_median", "label": "median angular error (deg)", "threshold": 5.0},
+    "fxaa": {"metric": "rmse", "label": "RGB RMSE vs 16x16 supersampling", "threshold": 0.03},
+    "dof": {"metric": "rmse", "label": "RGB RMSE vs thin-lens reference", "threshold": 0.03},
+}
+
+# Settings that equal each pass's default, used for the failure map (error
+# against the scene's knob). Matched against the CSV's `setting` text; a
+# method without an entry uses its median-quality setting.
+DEFAULT_SETTINGS = {
+    ("ao", "horizon"): "slices=4 steps=8",
+    ("ao", "hemisphere"): "samples=16",
+    ("normals", "extrapolated"): "",
+    ("normals", "central"): "",
+    ("fxaa", "FXAA"): "preset=12",
+    ("dof", "disc"): "samples=32",
+}
+
+
+def number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
+def load(data_dir):
+    rows = []
+    for name in sorted(os.listdir(data_dir)):
+        if not name.endswith(".csv"):
+            continue
+        with open(os.path.join(data_dir, name), newline="") as f:
+            for r in csv.DictReader(f):
+                for k in ("knob_value", "quality", "ms_per_mpix", "value"):
+                    r[k] = number(r[k])
+                rows.append(r)
+    return rows
+
+
+def pareto(points):
+    """Points (time, error) not beaten on both axes, sorted by time."""
+    front, best = [], math.inf
+    for t, e in sorted(p for p in points if math.isfinite(p[0]) and math.isfinite(p[1])):
+        if e < best:
+            front.append((t, e))
+            best = e
+    return front
+
+
+def timed(rows):
+    return [r for r in rows if math.isfinite(r["ms_per_mpix"]) and r["ms_per_mpix"] > 0]
+
+
+def speed_error_chart(rows, sweep, scene, out_dir):
+    spec = SWEEPS[sweep]
+    sel = [r for r in timed(rows) if r["sweep"] == sweep and r["scene"] == scene and r["region"] == "all"
+           and r["metric"] == spec["metric"] and math.isfinite(r["value"])]
+    if not sel:
+        return None
+    by_method = defaultdict(list)
+    for r in sel:
+        by_method[r["method"]].append(r)
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=80)
+    markers = "osD^v<>phX*"
+    for k, (method, pts) in enumerate(sorted(by_method.items())):
+        pts.sort(key=lambda r: (r["quality"], r["ms_per_mpix"]))
+        ax.plot([r["ms_per_mpix"] for r in pts], [r["value"] for r in pts], marker=markers[k % len(markers)],
+                ms=5, lw=1, label=method)
+    front = pareto([(r["ms_per_mpix"], r["value"]) for r in sel])
+    if front:
+        xs, ys = zip(*front)
+        ax.step(xs, ys, where="post", color="black", lw=2, alpha=0.35, label="Pareto front")
+        ax.scatter(xs, ys, s=90, facecolors="none", edgecolors="black", lw=1.2, zorder=5)
+    ax.set_xscale("log")
+    if all(r["value"] > 0 for r in sel):
+        ax.set_yscale("log")
+    ax.set_xlabel("time per megapixel (ms, log)")
+    ax.set_ylabel(spec["label"])
+    ax.set_title(f"{sweep}: {scene}")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    path = os.path.join(out_dir, f"chart-{sweep}-{scene}.png")
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def default_rows(rows, sweep, method):
+    """Rows of `method` at the pass's default setting."""
+    mine = [r for r in rows if r["sweep"] == sweep and r["method"] == method]
+    want = DEFAULT_SETTINGS.get((sweep, method))
+    if want is not None:
+        hit = [r for r in mine if r["setting"] == want]
+        if hit or want == "":
+            return hit if hit else mine
+    qualities = sorted({r["quality"] for r in mine if math.isfinite(r["quality"])})
+    if not qualities:
+        return mine
+    q = qualities[len(qualities) // 2]
+    return [r for r in mine if r["quality"] == q]
+
+
+def knob_families(rows, sweep):
+    fam = defaultdict(set)
+    for r in rows:
+        if r["sweep"] == sweep and r["knob"]:
+            fam[r["family"]].add(r["knob_value"])
+    return {f: sorted(v) for f, v in fam.items() if len(v) > 1}
+
+
+def methods_of(rows, sweep):
+    return sorted({r["method"] for r in rows if r["sweep"] == sweep and r["method"] not in ("reference",)
+                   and not r["method"].startswith("capture")})
+
+
+def knob_chart(rows, sweep, family, out_dir):
+    spec = SWEEPS[sweep]
+    fig, ax = plt.subplots(figsize=(6.4, 3.8), dpi=80)
+    knob = ""
+    drawn = False
+    for method in methods_of(rows, sweep):
+        sel = [r for r in default_rows(rows, sweep, method) if r["family"] == family and r["region"] == "all"
+               and r["metric"] == spec["metric"] and math.isfinite(r["value"])]
+        if len(sel) < 2:
+            continue
+        sel.sort(key=lambda r: r["knob_value"])
+        knob = sel[0]["knob"]
+        label = method + (f" ({sel[0]['setting']})" if sel[0]["setting"] else "")
+        ax.plot([r["knob_value"] for r in sel], [r["value"] for r in sel], marker="o", ms=4, label=label)
+        drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.axhline(spec["threshold"], color="red", ls="--", lw=1, label=f"threshold {spec['threshold']:g}")
+    ax.set_xlabel(knob)
+    ax.set_ylabel(spec["label"])
+    ax.set_title(f"{sweep}: {family} across its knob")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    path = os.path.join(out_dir, f"knob-{sweep}-{family}.png")
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def crossing(points, threshold):
+    """First knob value (in sweep order) where the error exceeds threshold,
+    and whether the error grows or shrinks with the knob there."""
+    for k, e in points:
+        if e > threshold:
+            return k
+    return None
+
+
+def failure_table(rows, sweep, image_dir, doc_dir):
+    spec = SWEEPS[sweep]
+    lines = ["| method (default setting) | scene family | knob | fails (error > %g) at | error range over the sweep | picture |"
+             % spec["threshold"], "|---|---|---|---|---|---|"]
+    pictures = sorted(os.listdir(image_dir)) if os.path.isdir(image_dir) else []
+    for family, values in sorted(knob_families(rows, sweep).items()):
+        for method in methods_of(rows, sweep):
+            sel = [r for r in default_rows(rows, sweep, method) if r["family"] == family and r["region"] == "all"
+                   and r["metric"] == spec["metric"] and math.isfinite(r["value"])]
+            if len(sel) < 2:
+                continue
+            pts = sorted((r["knob_value"], r["value"]) for r in sel)
+            bad = [k for k, e in pts if e > spec["threshold"]]
+            good = [k for k, e in pts if e <= spec["threshold"]]
+            if not bad:
+                where = "holds over the whole sweep"
+            elif not good:
+                where = "fails over the whole sweep"
+            else:
+                where = ", ".join(f"{k:g}" for k in bad)
+            lo, hi = min(e for _, e in pts), max(e for _, e in pts)
+            slug = re.sub(r"[^a-z0-9]+", "-", method.lower()).strip("-")
+            pic = [p for p in pictures if p.startswith(f"{sweep}-{family}") and (slug in p or sweep in ("fxaa", "dof"))]
+            link = " ".join(f"[{p}]({os.path.relpath(os.path.join(image_dir, p), doc_dir)})" for p in pic[:2])
+            setting = sel[0]["setting"]
+            lines.append(f"| {method}{' (' + setting + ')' if setting else ''} | {family} | {sel[0]['knob']} | "
+                         f"{where} | {lo:.3g} – {hi:.3g} | {link} |")
+    return "\n".join(lines)
+
+
+def summary_table(rows, sweep):
+    """Per scene: each method's most accurate point and its cost, and which
+    methods are on the Pareto front."""
+    spec = SWEEPS[sweep]
+    sel = [r for r in timed(rows) if r["sweep"] == sweep and r["region"] == "all" and r["metric"] == spec["metric"]
+           and math.isfinite(r["value"])]
+    scenes = sorted({r["scene"] for r in sel})
+    methods = sorted({r["method"] for r in sel})
+    head = "| scene | " + " | ".join(methods) + " |"
+    lines = [head, "|" + "---|" * (len(methods) + 1)]
+    for s in scenes:
+        here = [r for r in sel if r["scene"] == s]
+        front = set(pareto([(r["ms_per_mpix"], r["value"]) for r in here]))
+        cells = []
+        for m in methods:
+            pts = [r for r in here if r["method"] == m]
+            if not pts:
+                cells.append("")
+                continue
+            best = min(pts, key=lambda r: (r["value"], r["ms_per_mpix"]))
+            on = any((r["ms_per_mpix"], r["value"]) in front for r in pts)
+            cells.append(f"{best['value']:.3g} @ {best['ms_per_mpix']:.3g} ms" + (" ★" if on else ""))
+        lines.append(f"| {s} | " + " | ".join(cells) + " |")
+    lines.append("")
+    lines.append(f"Each cell: the method's lowest {spec['label']} over its settings, and that setting's time per "
+                 "megapixel; ★ = at least one of its settings is on the scene's Pareto front.")
+    return "\n".join(lines)
+
+
+def region_table(rows, sweep, metrics):
+    """Edge vs interior split at each method's default setting."""
+    lines = ["| scene | method | setting | " + " | ".join(f"{m} all / edge / interior" for m in metrics) + " |",
+             "|---|---|---|" + "---|" * len(metrics)]
+    for scene in sorted({r["scene"] for r in rows if r["sweep"] == sweep}):
+        for method in methods_of(rows, sweep):
+            sel = [r for r in default_rows(rows, sweep, method) if r["scene"] == scene]
+            if not sel:
+                continue
+            cells = []
+            for m in metrics:
+                vals = {r["region"]: r["value"] for r in sel if r["metric"] == m}
+                cells.append(" / ".join(f"{vals[g]:.3g}" if g in vals and math.isfinite(vals[g]) else "–"
+                                        for g in ("all", "edge", "interior")))
+            if any(c.replace("–", "").replace(" / ", "") for c in cells):
+                lines.append(f"| {scene} | {method} | {sel[0]['setting']} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def contact_sheet(rows, image_dir, out_dir):
+    """One picture of every family (its middle knob value) with its name."""
+    import matplotlib.image as mpimg
+    scenes = defaultdict(list)
+    for r in rows:
+        if r["sweep"] == "scenes" and r["metric"] == "coverage":
+            scenes[r["family"]].append((r["knob_value"], r["scene"], r["value"]))
+    picks = []
+    for family in sorted(scenes, key=lambda f: min(n for _, n, _ in scenes[f])):
+        items = sorted(scenes[family])
+        picks.append(items[len(items) // 2])
+    picks = [p for p in picks if os.path.exists(os.path.join(image_dir, f"scene-{p[1]}.png"))]
+    if not picks:
+        return None
+    cols = 4
+    rows_n = (len(picks) + cols - 1) // cols
+    fig, axes = plt.subplots(rows_n, cols, figsize=(cols * 2.2, rows_n * 2.4), dpi=80)
+    for ax in axes.flat:
+        ax.axis("off")
+    for ax, (_, name, coverage) in zip(axes.flat, picks):
+        ax.imshow(mpimg.imread(os.path.join(image_dir, f"scene-{name}.png")))
+        ax.set_title(f"{name}\n{coverage:.0%} covered", fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out_dir, "scenes.png")
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def chart_list(paths, doc_dir):
+    return "\n".join(f"![{os.path.basename(p)}]({os.path.relpath(p, doc_dir)})" for p in paths if p)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--data", required=True, help="folder with bench_accuracy's CSV files")
+    ap.add_argument("--images", required=True, help="folder for charts (failure pictures are read from here)")
+    ap.add_argument("--template", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    rows = load(a.data)
+    if not rows:
+        sys.exit(f"report.py: no CSV rows in {a.data}")
+    os.makedirs(a.images, exist_ok=True)
+    doc_dir = os.path.dirname(os.path.abspath(a.out))
+    blocks = {}
+    for sweep in SWEEPS:
+        scenes = sorted({r["scene"] for r in rows if r["sweep"] == sweep})
+        charts = [speed_error_chart(rows, sweep, s, a.images) for s in scenes]
+        blocks[f"charts:{sweep}"] = chart_list(charts, doc_dir)
+        knobs = [knob_chart(rows, sweep, f, a.images) for f in sorted(knob_families(rows, sweep))]
+        blocks[f"knob-charts:{sweep}"] = chart_list(knobs, doc_dir)
+        blocks[f"summary:{sweep}"] = summary_table(rows, sweep)
+        blocks[f"failures:{sweep}"] = failure_table(rows, sweep, a.images, doc_dir)
+    blocks["scenes"] = chart_list([contact_sheet(rows, a.images, a.images)], doc_dir)
+    blocks["regions:ao"] = region_table(rows, "ao", ["rmse", "bias"])
+    blocks["regions:normals"] = region_table(rows, "normals", ["angle_median", "angle_p95", "share_above_5"])
+    blocks["regions:fxaa"] = region_table(rows, "fxaa", ["rmse"])
+    blocks["regions:dof"] = region_table(rows, "dof", ["rmse"])
+    storage_csv = os.path.join(a.data, "storage.csv")
+    if os.path.exists(storage_csv):
+        import storage_table
+        blocks["storage"] = storage_table.table(storage_csv)
+
+    out = []
+    with open(a.template) as f:
+        for line in f:
+            m = re.match(r"\s*<!-- generated: (\S+) -->\s*$", line)
+            if m:
+                out.append(blocks.get(m.group(1), f"*(no data for {m.group(1)} in this run)*") + "\n")
+            else:
+                out.append(line)
+    tmp = a.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.writelines(out)
+    os.replace(tmp, a.out)
+    print(f"report.py: wrote {a.out} and {sum(1 for b in blocks.values() if b)} blocks", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

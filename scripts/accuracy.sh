@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Regenerates docs/accuracy.md: builds the accuracy harness (bench_accuracy)
+# and every plugin, runs every sweep on the stress scenes, and turns the CSV
+# into the charts, tables and failure pictures of the page. Outside CI: about
+# 20 minutes on 2 cores at the default size (192 x 192 scenes).
+#
+#   scripts/accuracy.sh [--quick] [--size N]
+#
+# Writes docs/accuracy/data/*.csv, docs/images/accuracy/*.png and
+# docs/accuracy.md (from bench/accuracy/accuracy.md.in).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+size=192
+quick=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=(--quick); size=128 ;;
+    --size) size=$2; shift ;;
+    *) echo "usage: scripts/accuracy.sh [--quick] [--size N]" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+"$root/scripts/install-deps.sh" python3-matplotlib python3-numpy
+export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build-accuracy}
+export DARKROOM_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Release -DDARKROOM_BUILD_BENCH=ON -DDARKROOM_BUILD_EDITOR=OFF -DDARKROOM_BUILD_TESTS=OFF ${DARKROOM_CMAKE_ARGS:-}"
+"$root/scripts/build.sh" runner bench_accuracy
+
+data=$root/docs/accuracy/data
+images=$root/docs/images/accuracy
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# Sweep into a scratch folder first, so a failed run leaves the committed
+# results alone.
+"$DARKROOM_BUILD_DIR/bin/bench_accuracy" --size "$size" --repeats 2 "${quick[@]}" --out "$tmp/data" --images "$tmp/images"
+/usr/bin/python3 "$root/bench/accuracy/report.py" --data "$tmp/data" --images "$tmp/images" \
+  --template "$root/bench/accuracy/accuracy.md.in" --out "$tmp/accuracy.md"
+rm -rf "$data" "$images"
+mkdir -p "$data" "$(dirname "$images")"
+cp "$tmp"/data/*.csv "$data/"
+cp -r "$tmp/images" "$images"
+# The report's links are relative to the page; it was written next to the
+# scratch folders, so rewrite them for docs/.
+sed -e "s#(images/#(images/accuracy/#g" "$tmp/accuracy.md" > "$root/docs/accuracy.md.tmp"
+mv "$root/docs/accuracy.md.tmp" "$root/docs/accuracy.md"
+echo "wrote docs/accuracy.md, $(ls "$data" | wc -l) CSV files and $(ls "$images" | wc -l) pictures" >&2
