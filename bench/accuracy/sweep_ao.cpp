@@ -1,0 +1,282 @@
+// Sweep "ao": SSAO (horizon and hemisphere, full and reduced resolution,
+// surface and points geometry) and ray-traced AO at growing sample counts,
+// against the cosine-weighted AO of the same world radius: the scene's closed
+// form where it has one (plane, corner), else reference::ambientOcclusion
+// with many rays. Background is excluded from every statistic.
+#include "ao_common.h"
+#include "harness.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/metrics.h>
+#include <darkroom/framework/reference.h>
+#include <darkroom/framework/stress_scenes.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace darkroom::accuracy {
+namespace {
+
+// RMSE (over the object's pixels) above which a setting counts as failing on
+// a scene; the first knob value past it gets a picture. 0.05 is about the
+// difference one sees between two AO images multiplied into a colour map.
+constexpr double kFailRmse = 0.05;
+
+// Seeds apart from the reference's (0), so the ray-traced curve is not the
+// reference's own first samples.
+constexpr std::uint32_t kCurveSeed = 7919;
+
+std::vector<std::pair<std::string, std::vector<double>>> selectedScenes(bool quick) {
+    const std::vector<std::string> wanted =
+        quick ? std::vector<std::string>{"plane", "corner", "particles", "slabs"}
+              : std::vector<std::string>{"plane",     "corner", "terrain",   "gyroid",      "staircase",
+                                         "border",    "particles", "streamlines", "slabs", "grazing"};
+    const auto known = stress::families();
+    std::vector<std::pair<std::string, std::vector<double>>> out;
+    for (const auto& f : wanted) {
+        if (std::find(known.begin(), known.end(), f) == known.end()) {
+            std::cerr << "ao: stress family '" << f << "' does not exist, skipped\n";
+            continue;
+        }
+        std::vector<double> knobs = stress::knobValues(f);
+        if (quick && knobs.size() > 2) knobs = {knobs.front(), knobs.back()};
+        out.emplace_back(f, knobs);
+    }
+    return out;
+}
+
+// Best of `repeats` wall times in ms per megapixel (the harness's routine
+// with a repeat count of our choosing, for the expensive ray-traced points).
+double timed(const std::function<void()>& work, std::size_t pixels, int repeats) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < std::max(1, repeats); ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        work();
+        best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return best / (double(pixels) * 1e-6);
+}
+
+double maskedMean(const float* v, const std::vector<std::uint8_t>& mask) {
+    double s = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        if (mask[i] && std::isfinite(v[i])) s += v[i], ++n;
+    return n ? s / double(n) : std::numeric_limits<double>::quiet_NaN();
+}
+
+struct SsaoSetting {
+    std::string method, setting;
+    double quality;
+    std::map<std::string, Value> params;
+    double scale = 1.0;  // capture and SSAO at this fraction of the size
+};
+
+std::vector<SsaoSetting> ssaoSettings(const std::string& family) {
+    std::vector<SsaoSetting> s;
+    for (auto [sl, st] : std::vector<std::pair<int, int>>{{1, 2}, {2, 4}, {4, 4}, {4, 8}, {8, 8}, {8, 16}, {16, 16}})
+        s.push_back({"horizon", "slices=" + std::to_string(sl) + " steps=" + std::to_string(st), double(sl * st),
+                     {{"method", Value("horizon")}, {"slices", Value(sl)}, {"steps", Value(st)}}});
+    for (int n : {4, 8, 16, 32, 64, 128})
+        s.push_back({"hemisphere", "samples=" + std::to_string(n), double(n),
+                     {{"method", Value("hemisphere")}, {"samples", Value(n)}}});
+    for (double scale : {0.5, 0.25}) {
+        std::ostringstream name;
+        name << "horizon at " << scale << "x";
+        s.push_back({name.str(), "slices=4 steps=8", 32.0 * scale * scale,
+                     {{"method", Value("horizon")}, {"slices", Value(4)}, {"steps", Value(8)}}, scale});
+    }
+    // The captured normals instead of reconstructed ones: separates the
+    // normal's share of the error from the occlusion estimate's.
+    s.push_back({"horizon + captured normals", "slices=4 steps=8", 32.0,
+                 {{"method", Value("horizon")}, {"slices", Value(4)}, {"steps", Value(8)}, {"useNormals", Value(true)}}});
+    if (family == "particles" || family == "streamlines") {
+        s.push_back({"horizon points", "slices=4 steps=8", 32.0,
+                     {{"method", Value("horizon")}, {"slices", Value(4)}, {"steps", Value(8)}, {"geometry", Value("points")}}});
+        s.push_back({"hemisphere points", "samples=16", 16.0,
+                     {{"method", Value("hemisphere")}, {"samples", Value(16)}, {"geometry", Value("points")}}});
+    }
+    return s;
+}
+
+bool picturedSetting(const SsaoSetting& s) {
+    return (s.method == "horizon" && s.setting == "slices=4 steps=8") ||
+           (s.method == "hemisphere" && s.setting == "samples=16");
+}
+
+void sweepAo(Harness& harness, Csv& csv) {
+    const Options& opt = harness.options();
+    const int refSamples = opt.quick ? 256 : 1024;
+    std::set<std::string> pictured;  // family/method pairs that already have their picture
+
+    for (const auto& [family, knobs] : selectedScenes(opt.quick)) {
+        for (double knob : knobs) {
+            const stress::StressScene scene = stress::make(family, knob, {opt.size, opt.size});
+            const Camera& cam = scene.camera;
+            const int w = cam.width, h = cam.height;
+            const std::size_t n = std::size_t(w) * h;
+            auto backend = harness.backend(scene);
+            Context& ctx = harness.context();
+            CaptureRequest request;
+            request.normals = true;
+            request.objectId = true;
+            const BufferPtr gbuffer = backend->render(cam, request, ctx);
+            const ao::Regions regions = ao::regions(*gbuffer);
+            const float* z = gbuffer->requireFloat("Z");
+            const double radius = scene.aoRadius;
+
+            Row base;
+            base.sweep = "ao";
+            base.scene = scene.name;
+            base.family = family;
+            base.knob = scene.knob;
+            base.knobValue = scene.knobValue;
+
+            // Reference AO (cosine), and the uniform-weighted one where asked.
+            std::vector<float> refAo(n, 1.0f);
+            std::vector<float> uniformAo;
+            const bool wantUniform = family == "corner" || family == "terrain";
+            std::string refSetting;
+            if (scene.analyticAo) {
+                refSetting = "analytic";
+                if (wantUniform) uniformAo.assign(n, 1.0f);
+                for (int y = 0; y < h; ++y)
+                    for (int x = 0; x < w; ++x) {
+                        const std::size_t i = std::size_t(y) * w + x;
+                        if (!std::isfinite(z[i])) continue;
+                        const Vec3 p = cam.worldPosition(x + 0.5, y + 0.5, z[i]);
+                        refAo[i] = float(scene.analyticAo(p, radius, reference::AoWeighting::Cosine));
+                        if (wantUniform) uniformAo[i] = float(scene.analyticAo(p, radius, reference::AoWeighting::Uniform));
+                    }
+            } else {
+                refSetting = "samples=" + std::to_string(refSamples);
+                reference::AoOptions ro;
+                ro.radius = radius;
+                ro.samples = refSamples;
+                const BufferPtr ref = reference::ambientOcclusion(*backend, cam, ro, ctx);
+                std::copy_n(ref->requireFloat("AO"), n, refAo.begin());
+                Row r = base;
+                r.method = "reference";
+                r.setting = refSetting;
+                r.quality = refSamples;
+                r.metric = "stderr";
+                r.value = maskedMean(ref->requireFloat("AO.stderr"), regions.all);
+                csv.add(r);
+                if (wantUniform) {
+                    ro.weighting = reference::AoWeighting::Uniform;
+                    const BufferPtr u = reference::ambientOcclusion(*backend, cam, ro, ctx);
+                    uniformAo.assign(u->requireFloat("AO"), u->requireFloat("AO") + n);
+                }
+            }
+            {
+                Row r = base;
+                r.method = "reference";
+                r.setting = refSetting;
+                r.metric = "mean_ao";
+                r.value = maskedMean(refAo.data(), regions.all);
+                csv.add(r);
+            }
+            if (!uniformAo.empty()) {
+                Row r = base;
+                r.method = "uniform vs cosine reference";
+                r.setting = refSetting;
+                r.metric = "rmse";
+                r.value = metrics::rmse(uniformAo.data(), refAo.data(), n, regions.all.data()).value;
+                csv.add(r);
+                r.metric = "bias";
+                r.value = metrics::bias(uniformAo.data(), refAo.data(), n, regions.all.data()).value;
+                csv.add(r);
+            }
+
+            // One setting's rows; returns its RMSE over all object pixels.
+            auto emit = [&](const std::string& method, const std::string& setting, double quality, double ms,
+                            const float* ao) {
+                Row r = base;
+                r.method = method;
+                r.setting = setting;
+                r.quality = quality;
+                r.msPerMpix = ms;
+                double rmseAll = 0;
+                for (const char* region : ao::kRegions) {
+                    r.region = region;
+                    r.metric = "rmse";
+                    r.value = metrics::rmse(ao, refAo.data(), n, regions.get(region)).value;
+                    if (r.region == "all") rmseAll = r.value;
+                    csv.add(r);
+                    r.metric = "bias";
+                    r.value = metrics::bias(ao, refAo.data(), n, regions.get(region)).value;
+                    csv.add(r);
+                }
+                r.region = "all";
+                r.metric = "ssim";
+                r.value = metrics::ssim(ao, refAo.data(), w, h, 1.0, regions.all.data()).value;
+                csv.add(r);
+                return rmseAll;
+            };
+
+            for (const SsaoSetting& s : ssaoSettings(family)) {
+                auto params = s.params;
+                params["radiusUnits"] = Value("world");
+                params["radius"] = Value(radius);
+                params["falloff"] = Value(0.0);
+                params["blurRadius"] = Value(0);
+                if (!params.count("geometry")) params["geometry"] = Value("surface");
+                std::vector<float> ao(n);
+                double ms;
+                if (s.scale == 1.0) {
+                    BufferPtr out;
+                    ms = harness.msPerMpix([&] { out = harness.runPass("SSAO", gbuffer, params); }, n);
+                    std::copy_n(out->requireFloat("AO"), n, ao.begin());
+                } else {
+                    Camera small = cam;
+                    small.width = std::max(1, int(std::lround(w * s.scale)));
+                    small.height = std::max(1, int(std::lround(h * s.scale)));
+                    const BufferPtr low = backend->render(small, CaptureRequest{}, ctx);
+                    BufferPtr up;
+                    ms = harness.msPerMpix(
+                        [&] { up = ao::upsampleBilinear(*harness.runPass("SSAO", low, params), "AO", w, h); }, n);
+                    std::copy_n(up->requireFloat("AO"), n, ao.begin());
+                }
+                const double e = emit(s.method, s.setting, s.quality, ms, ao.data());
+                const std::string key = family + "/" + s.method;
+                if (picturedSetting(s) && e > kFailRmse && !opt.imageDir.empty() && !pictured.count(key)) {
+                    pictured.insert(key);
+                    auto pic = ao::panel(w, h, 3, [&](int tile, int x, int y, float* rgb) {
+                        const std::size_t i = std::size_t(y) * w + x;
+                        float v = tile == 0 ? ao[i] : tile == 1 ? refAo[i] : 4.0f * std::fabs(ao[i] - refAo[i]);
+                        if (tile == 2 && !std::isfinite(z[i])) v = 0;
+                        rgb[0] = rgb[1] = rgb[2] = v;
+                    });
+                    harness.writePicture(*pic, {"R", "G", "B"}, "ao-" + scene.name + "-" + s.method);
+                }
+                std::cerr << "ao " << scene.name << " " << s.method << " " << s.setting << ": rmse " << e << ", "
+                          << ms << " ms/Mpix\n";
+            }
+
+            // Ray-traced AO as its own curve: where it beats screen space.
+            for (int samples = 1; samples <= 256; samples *= 2) {
+                reference::AoOptions ro;
+                ro.radius = radius;
+                ro.samples = samples;
+                ro.seed = kCurveSeed;
+                BufferPtr out;
+                const double ms = timed([&] { out = reference::ambientOcclusion(*backend, cam, ro, ctx); }, n,
+                                        samples <= 16 ? opt.repeats : 1);
+                const double e = emit("ray traced (cosine)", "samples=" + std::to_string(samples), samples, ms,
+                                      out->requireFloat("AO"));
+                std::cerr << "ao " << scene.name << " ray traced " << samples << ": rmse " << e << ", " << ms
+                          << " ms/Mpix\n";
+            }
+        }
+    }
+}
+
+DARKROOM_ACCURACY_SWEEP("ao", "SSAO horizon/hemisphere and ray-traced AO vs cosine-weighted reference AO", sweepAo);
+
+}  // namespace
+}  // namespace darkroom::accuracy
