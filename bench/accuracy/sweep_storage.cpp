@@ -182,8 +182,8 @@ private:
     }
 
     // Writes `image` (only `channels`, all when empty) best-of-N times and
-    // reads it back best-of-N times; rows bytes, write_ms, read_ms. Returns
-    // the file read back.
+    // reads it back best-of-N times; rows bytes, bytes_per_pixel and wall
+    // and CPU times. Returns the file read back.
     BufferPtr store(const Buffer& image, const std::vector<std::string>& channels, const Variant& v,
                     const std::string& setting, const std::string& methodOverride = "") {
         const std::string path = tmp_.file("entry.exr");
@@ -245,8 +245,9 @@ private:
                 if (g.name == "scalar" && v.half && v.compression == "zip") scalarHalf_ = back;
             }
         }
-        // Depth as half, which writeImage refuses for "Z": the same values
-        // under another name, to show what it would cost the reconstruction.
+        // Depth as half, which writeImage never writes (it keeps "Z" float32):
+        // the same values under another name, to show what half would cost
+        // the reconstruction.
         const auto renamed = subset(*gbuffer_, {"Z"}, {"depth"});
         for (const Variant& v : variants()) {
             if (!v.half) continue;
