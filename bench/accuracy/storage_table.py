@@ -122,6 +122,29 @@ def normals_table(d):
     return "\n".join(out)
 
 
+def objects_table(d):
+    """Scenes of several objects: reconstruction error on each object's pixels."""
+    settings = []
+    for (method, setting, _, metric) in d:
+        if method == "extrapolated" and setting.startswith("captured, ") and metric == "pixels" \
+                and setting not in settings:
+            settings.append(setting)
+    if not settings:
+        return ""
+    out = ["| reconstructed on | pixels | central median / p95 (°) | extrapolated median / p95 (°) | "
+           "> 5° central / extrapolated |", "|---|---:|---:|---:|---:|"]
+    for setting in settings:
+        name = setting[len("captured, "):-len(" only")]
+        cells = [f"{int(_get(d, 'extrapolated', setting, 'pixels')):,}"]
+        for method in ("central", "extrapolated"):
+            cells.append(f"{_num(_get(d, method, setting, 'angle_median'))} / "
+                         f"{_num(_get(d, method, setting, 'angle_p95'))}")
+        cells.append(" / ".join(f"{100 * _get(d, m, setting, 'share_above_5'):.0f} %"
+                                for m in ("central", "extrapolated")))
+        out.append(f"| {name} | " + " | ".join(cells) + " |")
+    return "\n".join(out)
+
+
 def facts(d):
     """One line: Z read back bit-identical, half scalar error, pixel counts by region."""
     z_same = [_get(d, "Z read back", v, "z_bitwise_equal") for v in VARIANTS]
@@ -245,6 +268,7 @@ def table(csv_path):
         parts.append(f"### {scene}{size}\n\n"
                      f"KiB per entry:\n\n{bytes_table(d)}\n\n"
                      f"Normals against the captured (exact) ones:\n\n{normals_table(d)}\n\n"
+                     + (f"By object:\n\n{objects_table(d)}\n\n" if objects_table(d) else "") +
                      f"{facts(d)}\n\n{timing_table(d)}")
     return "\n\n".join(parts) + "\n"
 
