@@ -36,7 +36,7 @@ struct DefocusedEdge {
     Camera cam = frontCamera(kSize);
     double focal = 4.0;
     double aperture = 0.0;
-    DefocusedEdge(double diameterPx) {
+    explicit DefocusedEdge(double diameterPx) {
         plane.a = 1.0;
         plane.b = 0.0;
         plane.c = 0.0;
