@@ -21,7 +21,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-"$root/scripts/install-deps.sh" python3-matplotlib python3-numpy
+"$root/scripts/install-deps.sh" python3-matplotlib python3-numpy python3-pil
 export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build-accuracy}
 export DARKROOM_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Release -DDARKROOM_BUILD_BENCH=ON -DDARKROOM_BUILD_EDITOR=OFF -DDARKROOM_BUILD_TESTS=OFF ${DARKROOM_CMAKE_ARGS:-}"
 "$root/scripts/build.sh" runner bench_accuracy

@@ -33,17 +33,104 @@ SWEEPS = {
     "dof": {"metric": "rmse", "label": "RGB RMSE vs thin-lens reference", "threshold": 0.03},
 }
 
-# Settings that equal each pass's default, used for the failure map (error
-# against the scene's knob). Matched against the CSV's `setting` text; a
+# Settings that equal each pass's default: the failure map and the
+# edge/interior tables use these. Matched against the CSV's `setting` text; a
 # method without an entry uses its median-quality setting.
 DEFAULT_SETTINGS = {
     ("ao", "horizon"): "slices=4 steps=8",
     ("ao", "hemisphere"): "samples=16",
-    ("normals", "extrapolated"): "",
-    ("normals", "central"): "",
-    ("fxaa", "FXAA"): "preset=12",
-    ("dof", "disc"): "samples=32",
+    ("ao", "ray traced (cosine)"): "samples=16",
+    ("fxaa", "FXAA"): "preset 12",
+    ("fxaa", "SSAA"): "2x2",
+    ("dof", "SSDoF disc"): "samples 64",
 }
+
+
+def _value(rows, region, metric):
+    for r in rows:
+        if r["region"] == region and r["metric"] == metric and math.isfinite(r["value"]):
+            return r["value"]
+    return math.nan
+
+
+# The failure map's rule per sweep: which methods it judges, what it counts as
+# failing (stated in the page), and the value it quotes. Rules that compare
+# with a baseline (FXAA against its aliased input, SSDoF against doing
+# nothing) judge whether the method does its job, not only the absolute error:
+# a method that leaves the error where it was fails even when that error is
+# small. `judge(own, base, floor)` gets the rows of one scene.
+FAILURE_RULES = {
+    "ao": {
+        "methods": ["horizon", "hemisphere", "horizon points", "hemisphere points"],
+        "rule": "RMSE over geometry pixels > 0.05",
+        "panels": "SSAO | reference | 4 × |error| (white = 0.25 or more)",
+        "judge": lambda own, base, floor: _value(own, "all", "rmse") > 0.05,
+        "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.3f}",
+    },
+    "normals": {
+        "methods": ["extrapolated", "central", "nearest"],
+        "rule": "interior median > 5°, or 95th percentile over all geometry > 30°",
+        "panels": "reconstructed | captured geometric normals (RGB = 0.5 + 0.5 n) | angular error (white = 45° or more)",
+        "judge": lambda own, base, floor: _value(own, "interior", "angle_median") > 5.0
+        or _value(own, "all", "angle_p95") > 30.0,
+        "quote": lambda own, base, floor: f"{_value(own, 'interior', 'angle_median'):.2g}° / "
+        f"{_value(own, 'all', 'angle_p95'):.3g}°",
+    },
+    "fxaa": {
+        "methods": ["FXAA"],
+        "baseline": "1 spp",
+        "panels": "1 spp input | FXAA 12 | 16 × 16 reference (centre crop, magnified)",
+        "rule": "RMSE above 90 % of the 1-sample input's (FXAA removes less than a tenth of the aliasing) "
+        "while above 0.005, or RMSE above 0.02",
+        "judge": lambda own, base, floor: (_value(own, "all", "rmse") > 0.9 * _value(base, "all", "rmse")
+                                           and _value(own, "all", "rmse") > 0.005)
+        or _value(own, "all", "rmse") > 0.02,
+        "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.4f} "
+        f"({_value(own, 'all', 'rmse') / _value(base, 'all', 'rmse'):.0%} of 1 spp)",
+    },
+    "dof": {
+        "methods": ["SSDoF disc", "SSDoF hexagon"],
+        "baseline": "sharp",
+        "floor": "lens only",
+        "panels": "SSDoF disc 64 | thin-lens reference | 4 × |error| (centre crop, magnified)",
+        "rule": "removes less than half of the removable error (RMSE − floor > 0.5 × (sharp − floor), "
+        "floor = the thin lens without pixel jitter) while more than 0.005 above the floor, or RMSE > 0.03",
+        "judge": lambda own, base, floor: (
+            (_value(own, "all", "rmse") - _value(floor, "all", "rmse")
+             > 0.5 * (_value(base, "all", "rmse") - _value(floor, "all", "rmse"))
+             and _value(own, "all", "rmse") - _value(floor, "all", "rmse") > 0.005)
+            or _value(own, "all", "rmse") > 0.03),
+        "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.4f} "
+        f"({(_value(own, 'all', 'rmse') - _value(floor, 'all', 'rmse')) / max(1e-12, _value(base, 'all', 'rmse') - _value(floor, 'all', 'rmse')):.0%} "
+        "of removable)",
+    },
+}
+
+
+def save_png(fig, path):
+    """Saves a chart as a 64-colour palette PNG: a third of the size of the
+    true-colour file for flat-coloured charts, which keeps the committed page light."""
+    import io
+    from PIL import Image
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    plt.close(fig)
+    buf.seek(0)
+    Image.open(buf).convert("RGB").quantize(colors=64).save(path, optimize=True)
+
+
+def shrink_pictures(image_dir, limit=60_000):
+    """Failure pictures above `limit` bytes become 256-colour palette PNGs
+    (dithered): enough to see the failure, small enough to commit."""
+    from PIL import Image
+    for name in os.listdir(image_dir):
+        path = os.path.join(image_dir, name)
+        if name.endswith(".png") and os.path.getsize(path) > limit:
+            Image.open(path).convert("RGB").quantize(colors=256).save(path + ".tmp.png", optimize=True)
+            if os.path.getsize(path + ".tmp.png") < os.path.getsize(path):
+                os.replace(path + ".tmp.png", path)
+            else:
+                os.remove(path + ".tmp.png")
 
 
 def number(text):
@@ -110,7 +197,7 @@ def speed_error_chart(rows, sweep, scene, out_dir):
     ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
     path = os.path.join(out_dir, f"chart-{sweep}-{scene}.png")
-    fig.savefig(path)
+    save_png(fig, path)
     plt.close(fig)
     return path
 
@@ -169,47 +256,86 @@ def knob_chart(rows, sweep, family, out_dir):
     ax.legend(fontsize=7)
     fig.tight_layout()
     path = os.path.join(out_dir, f"knob-{sweep}-{family}.png")
-    fig.savefig(path)
+    save_png(fig, path)
     plt.close(fig)
     return path
 
 
-def crossing(points, threshold):
-    """First knob value (in sweep order) where the error exceeds threshold,
-    and whether the error grows or shrinks with the knob there."""
-    for k, e in points:
-        if e > threshold:
-            return k
-    return None
+def picture_for(pictures, sweep, family, scenes, method):
+    """The sweep's failure picture for this family: one of the failing scenes,
+    preferring the one named after the method."""
+    slug = re.sub(r"[^a-z0-9]+", "-", method.lower()).strip("-")
+    candidates = [p for p in pictures if any(p.startswith(f"{sweep}-{s}") for s in scenes)
+                  or p == f"{sweep}-{family}.png"]
+    named = [p for p in candidates if p[:-4].endswith("-" + slug)]
+    if named:
+        return named[0]
+    # Pictures of one method per scene (fxaa, dof) carry no method name.
+    unnamed = [p for p in candidates if not any(p[:-4].endswith("-" + re.sub(r"[^a-z0-9]+", "-", m.lower()).strip("-"))
+                                                 for m in methods_of_all)]
+    return unnamed[0] if unnamed else None
+
+
+methods_of_all = []
+
+
+def label_of(method, setting):
+    return method + (f" ({setting})" if setting and setting != "default" else "")
 
 
 def failure_table(rows, sweep, image_dir, doc_dir):
-    spec = SWEEPS[sweep]
-    lines = ["| method (default setting) | scene family | knob | fails (error > %g) at | error range over the sweep | picture |"
-             % spec["threshold"], "|---|---|---|---|---|---|"]
+    rule = FAILURE_RULES[sweep]
     pictures = sorted(os.listdir(image_dir)) if os.path.isdir(image_dir) else []
-    for family, values in sorted(knob_families(rows, sweep).items()):
-        for method in methods_of(rows, sweep):
-            sel = [r for r in default_rows(rows, sweep, method) if r["family"] == family and r["region"] == "all"
-                   and r["metric"] == spec["metric"] and math.isfinite(r["value"])]
-            if len(sel) < 2:
-                continue
-            pts = sorted((r["knob_value"], r["value"]) for r in sel)
-            bad = [k for k, e in pts if e > spec["threshold"]]
-            good = [k for k, e in pts if e <= spec["threshold"]]
+    methods_of_all[:] = sorted({r["method"] for r in rows if r["sweep"] == sweep})
+    lines = [f"Fails when: {rule['rule']}.", "",
+             "| method (default setting) | family | knob | holds at | fails at | error where it fails (worst) | picture |",
+             "|---|---|---|---|---|---|---|"]
+    shown = []
+    families = defaultdict(dict)
+    for r in rows:
+        if r["sweep"] == sweep and r["family"]:
+            families[r["family"]][r["scene"]] = (r["knob_value"], r["knob"])
+    for method in rule["methods"]:
+        own_rows = default_rows(rows, sweep, method)
+        if not own_rows:
+            continue
+        base_rows = default_rows(rows, sweep, rule["baseline"]) if "baseline" in rule else []
+        floor_rows = default_rows(rows, sweep, rule["floor"]) if "floor" in rule else []
+        setting = own_rows[0]["setting"]
+        holding = []
+        for family in sorted(families):
+            scenes = sorted(families[family].items(), key=lambda kv: kv[1][0])
+            good, bad = [], []
+            for scene, (knob_value, knob) in scenes:
+                own = [r for r in own_rows if r["scene"] == scene]
+                if not own:
+                    continue
+                base = [r for r in base_rows if r["scene"] == scene]
+                floor = [r for r in floor_rows if r["scene"] == scene]
+                label = f"{knob_value:g}" if knob else scene
+                failed = rule["judge"](own, base, floor)
+                (bad if failed else good).append((label, scene, rule["quote"](own, base, floor)))
             if not bad:
-                where = "holds over the whole sweep"
-            elif not good:
-                where = "fails over the whole sweep"
-            else:
-                where = ", ".join(f"{k:g}" for k in bad)
-            lo, hi = min(e for _, e in pts), max(e for _, e in pts)
-            slug = re.sub(r"[^a-z0-9]+", "-", method.lower()).strip("-")
-            pic = [p for p in pictures if p.startswith(f"{sweep}-{family}") and (slug in p or sweep in ("fxaa", "dof"))]
-            link = " ".join(f"[{p}]({os.path.relpath(os.path.join(image_dir, p), doc_dir)})" for p in pic[:2])
-            setting = sel[0]["setting"]
-            lines.append(f"| {method}{' (' + setting + ')' if setting else ''} | {family} | {sel[0]['knob']} | "
-                         f"{where} | {lo:.3g} – {hi:.3g} | {link} |")
+                if good:
+                    holding.append(family)
+                continue
+            knob = scenes[0][1][1] or "–"
+            holds = ", ".join(g[0] for g in good) or "–"
+            fails = ", ".join(b[0] for b in bad)
+            quoted = "; ".join(f"{b[0]}: {b[2]}" for b in bad[:3]) + (" …" if len(bad) > 3 else "")
+            pic = picture_for(pictures, sweep, family, [b[1] for b in bad], method)
+            link = ""
+            if pic:
+                link = f"[{pic[:-4]}]({os.path.relpath(os.path.join(image_dir, pic), doc_dir)})"
+                if pic not in shown:
+                    shown.append(pic)
+            lines.append(f"| {label_of(method, setting)} | {family} | {knob} | {holds} | **{fails}** | {quoted} | {link} |")
+        if holding:
+            lines.append(f"| {label_of(method, setting)} | {', '.join(holding)} | | everywhere | – | – | |")
+    if shown:
+        lines += ["", f"The failures (panels: {rule['panels']}):", ""]
+        for p in shown:
+            lines += [f"*{p[:-4]}*", "", f"![{p}]({os.path.relpath(os.path.join(image_dir, p), doc_dir)})", ""]
     return "\n".join(lines)
 
 
@@ -285,13 +411,18 @@ def contact_sheet(rows, image_dir, out_dir):
         ax.set_title(f"{name}\n{coverage:.0%} covered", fontsize=8)
     fig.tight_layout()
     path = os.path.join(out_dir, "scenes.png")
-    fig.savefig(path)
+    save_png(fig, path)
     plt.close(fig)
     return path
 
 
-def chart_list(paths, doc_dir):
-    return "\n".join(f"![{os.path.basename(p)}]({os.path.relpath(p, doc_dir)})" for p in paths if p)
+def chart_list(paths, doc_dir, width=None):
+    """Markdown images, or HTML ones at `width` (e.g. "49%") so that GitHub lays
+    several side by side."""
+    if width is None:
+        return "\n\n".join(f"![{os.path.basename(p)}]({os.path.relpath(p, doc_dir)})" for p in paths if p)
+    return "\n".join(f'<img src="{os.path.relpath(p, doc_dir)}" alt="{os.path.basename(p)}" width="{width}">'
+                     for p in paths if p)
 
 
 def main():
@@ -305,12 +436,13 @@ def main():
     if not rows:
         sys.exit(f"report.py: no CSV rows in {a.data}")
     os.makedirs(a.images, exist_ok=True)
+    shrink_pictures(a.images)
     doc_dir = os.path.dirname(os.path.abspath(a.out))
     blocks = {}
     for sweep in SWEEPS:
         scenes = sorted({r["scene"] for r in rows if r["sweep"] == sweep})
         charts = [speed_error_chart(rows, sweep, s, a.images) for s in scenes]
-        blocks[f"charts:{sweep}"] = chart_list(charts, doc_dir)
+        blocks[f"charts:{sweep}"] = chart_list(charts, doc_dir, width="49%")
         knobs = [knob_chart(rows, sweep, f, a.images) for f in sorted(knob_families(rows, sweep))]
         blocks[f"knob-charts:{sweep}"] = chart_list(knobs, doc_dir)
         blocks[f"summary:{sweep}"] = summary_table(rows, sweep)
