@@ -5,29 +5,40 @@
 # 20 minutes on 2 cores at the default size (192 x 192 scenes).
 #
 #   scripts/accuracy.sh [--quick] [--size N]
+#   scripts/accuracy.sh --report-only
 #
 # Writes docs/accuracy/data/*.csv, docs/images/accuracy/*.png and
-# docs/accuracy.md (from bench/accuracy/accuracy.md.in).
+# docs/accuracy.md (from bench/accuracy/accuracy.md.in). --report-only skips
+# the build and the sweep and rewrites the page, charts and tables from the
+# committed CSV files (seconds; for edits to the prose or the report).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 size=192
 quick=()
+report_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=(--quick); size=128 ;;
     --size) size=$2; shift ;;
-    *) echo "usage: scripts/accuracy.sh [--quick] [--size N]" >&2; exit 2 ;;
+    --report-only) report_only=1 ;;
+    *) echo "usage: scripts/accuracy.sh [--quick] [--size N] | --report-only" >&2; exit 2 ;;
   esac
   shift
 done
 
 "$root/scripts/install-deps.sh" python3-matplotlib python3-numpy python3-pil
+data=$root/docs/accuracy/data
+images=$root/docs/images/accuracy
+if [ "$report_only" = 1 ]; then
+  [ -f "$data/ao.csv" ] || { echo "accuracy.sh: no committed results in $data; run without --report-only first" >&2; exit 1; }
+  /usr/bin/python3 "$root/bench/accuracy/report.py" --data "$data" --images "$images" \
+    --template "$root/bench/accuracy/accuracy.md.in" --out "$root/docs/accuracy.md"
+  exit 0
+fi
 export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build-accuracy}
 export DARKROOM_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Release -DDARKROOM_BUILD_BENCH=ON -DDARKROOM_BUILD_EDITOR=OFF -DDARKROOM_BUILD_TESTS=OFF ${DARKROOM_CMAKE_ARGS:-}"
 "$root/scripts/build.sh" runner bench_accuracy
 
-data=$root/docs/accuracy/data
-images=$root/docs/images/accuracy
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # Sweep into a scratch folder first, so a failed run leaves the committed
