@@ -52,6 +52,6 @@ cp "$tmp"/data/*.csv "$data/"
 cp -r "$tmp/images" "$images"
 # The report's links are relative to the page; it was written next to the
 # scratch folders, so rewrite them for docs/.
-sed -e "s#(images/#(images/accuracy/#g" "$tmp/accuracy.md" > "$root/docs/accuracy.md.tmp"
+sed -e "s#(images/#(images/accuracy/#g" -e "s#src=\"images/#src=\"images/accuracy/#g" "$tmp/accuracy.md" > "$root/docs/accuracy.md.tmp"
 mv "$root/docs/accuracy.md.tmp" "$root/docs/accuracy.md"
 echo "wrote docs/accuracy.md, $(ls "$data" | wc -l) CSV files and $(ls "$images" | wc -l) pictures" >&2

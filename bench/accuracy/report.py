@@ -86,7 +86,7 @@ FAILURE_RULES = {
                                            and _value(own, "all", "rmse") > 0.005)
         or _value(own, "all", "rmse") > 0.02,
         "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.4f} "
-        f"({_value(own, 'all', 'rmse') / _value(base, 'all', 'rmse'):.0%} of 1 spp)",
+        f"({_value(own, 'all', 'rmse') / _value(base, 'all', 'rmse'):.0%} of the 1-spp error)",
     },
     "dof": {
         "methods": ["SSDoF disc", "SSDoF hexagon"],
@@ -102,7 +102,7 @@ FAILURE_RULES = {
             or _value(own, "all", "rmse") > 0.03),
         "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.4f} "
         f"({(_value(own, 'all', 'rmse') - _value(floor, 'all', 'rmse')) / max(1e-12, _value(base, 'all', 'rmse') - _value(floor, 'all', 'rmse')):.0%} "
-        "of removable)",
+        "of the removable error left)",
     },
 }
 
