@@ -1,6 +1,7 @@
-# darkroom_add_gtest(NAME SOURCES src... [LIBRARIES lib...] [DEPENDS target...])
+# darkroom_add_gtest(NAME SOURCES src... [LIBRARIES lib...] [DEPENDS target...] [LABEL label])
 #
-# One GoogleTest executable registered with ctest. Tests find the build's
+# One GoogleTest executable registered with ctest; LABEL puts its tests in a
+# group ctest can select (`ctest -L accuracy`). Tests find the build's
 # plugins, the source tree and ../shared/data through compile definitions.
 if(DARKROOM_BUILD_TESTS)
   include(GoogleTest)
@@ -11,7 +12,7 @@ function(darkroom_add_gtest NAME)
   if(NOT DARKROOM_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "LABEL" "SOURCES;LIBRARIES;DEPENDS" ${ARGN})
   add_executable(${NAME} ${ARG_SOURCES})
   target_link_libraries(${NAME} PRIVATE darkroom_framework darkroom_testsupport GTest::gtest_main GTest::gmock ${ARG_LIBRARIES})
   target_compile_definitions(${NAME} PRIVATE
@@ -23,7 +24,11 @@ function(darkroom_add_gtest NAME)
   if(ARG_DEPENDS)
     add_dependencies(${NAME} ${ARG_DEPENDS})
   endif()
+  set(properties ENVIRONMENT "DARKROOM_PLUGIN_PATH=")
+  if(ARG_LABEL)
+    list(APPEND properties LABELS ${ARG_LABEL})
+  endif()
   gtest_discover_tests(${NAME} DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests
-    PROPERTIES ENVIRONMENT "DARKROOM_PLUGIN_PATH=")
+    PROPERTIES ${properties})
 endfunction()

@@ -28,7 +28,7 @@ sys.path.insert(0, HERE)
 # its label, and the threshold above which a method counts as failing.
 SWEEPS = {
     "ao": {"metric": "rmse", "label": "AO RMSE", "threshold": 0.05},
-    "normals": {"metric": "angle_median", "label": "median angular error (deg)", "threshold": 5.0},
+    "normals": {"metric": "angle_p95", "label": "95th-percentile angular error (deg)", "threshold": 30.0},
     "fxaa": {"metric": "rmse", "label": "RGB RMSE vs 16x16 supersampling", "threshold": 0.03},
     "dof": {"metric": "rmse", "label": "RGB RMSE vs thin-lens reference", "threshold": 0.03},
 }
