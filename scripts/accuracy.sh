@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates docs/accuracy.md: builds the accuracy harness (bench_accuracy)
 # and every plugin, runs every sweep on the stress scenes, and turns the CSV
-# into the charts, tables and failure pictures of the page. Outside CI: about
-# 20 minutes on 2 cores at the default size (192 x 192 scenes).
+# into the charts, tables and failure pictures of the page. Outside CI: 10–20
+# minutes on 2 cores (10 measured with a warm ccache on an idle machine) at the default size (192 x 192 scenes).
 #
 #   scripts/accuracy.sh [--quick] [--size N]
 #   scripts/accuracy.sh --report-only
