@@ -2,7 +2,8 @@
 # Regenerates docs/accuracy.md: builds the accuracy harness (bench_accuracy)
 # and every plugin, runs every sweep on the stress scenes, and turns the CSV
 # into the charts, tables and failure pictures of the page. Outside CI: 10–20
-# minutes on 2 cores (10 measured with a warm ccache on an idle machine) at the default size (192 x 192 scenes).
+# minutes on 2 cores at the default size (192 x 192 scenes); 10 measured with
+# a warm ccache on an idle machine.
 #
 #   scripts/accuracy.sh [--quick] [--size N]
 #   scripts/accuracy.sh --report-only
@@ -41,17 +42,16 @@ export DARKROOM_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Release -DDARKROOM_BUILD_BENCH=ON
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-# Sweep into a scratch folder first, so a failed run leaves the committed
-# results alone.
-"$DARKROOM_BUILD_DIR/bin/bench_accuracy" --size "$size" --repeats 2 "${quick[@]}" --out "$tmp/data" --images "$tmp/images"
-/usr/bin/python3 "$root/bench/accuracy/report.py" --data "$tmp/data" --images "$tmp/images" \
+# Sweep and report into a scratch copy of docs/ first, so a failed run leaves
+# the committed results alone and the page's relative links are already right.
+"$DARKROOM_BUILD_DIR/bin/bench_accuracy" --size "$size" --repeats 2 "${quick[@]}" \
+  --out "$tmp/accuracy/data" --images "$tmp/images/accuracy"
+/usr/bin/python3 "$root/bench/accuracy/report.py" --data "$tmp/accuracy/data" --images "$tmp/images/accuracy" \
   --template "$root/bench/accuracy/accuracy.md.in" --out "$tmp/accuracy.md"
 rm -rf "$data" "$images"
 mkdir -p "$data" "$(dirname "$images")"
-cp "$tmp"/data/*.csv "$data/"
-cp -r "$tmp/images" "$images"
-# The report's links are relative to the page; it was written next to the
-# scratch folders, so rewrite them for docs/.
-sed -e "s#(images/#(images/accuracy/#g" -e "s#src=\"images/#src=\"images/accuracy/#g" "$tmp/accuracy.md" > "$root/docs/accuracy.md.tmp"
+cp "$tmp"/accuracy/data/*.csv "$data/"
+cp -r "$tmp/images/accuracy" "$images"
+mv "$tmp/accuracy.md" "$root/docs/accuracy.md.tmp"
 mv "$root/docs/accuracy.md.tmp" "$root/docs/accuracy.md"
 echo "wrote docs/accuracy.md, $(ls "$data" | wc -l) CSV files and $(ls "$images" | wc -l) pictures" >&2

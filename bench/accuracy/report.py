@@ -198,7 +198,6 @@ def speed_error_chart(rows, sweep, scene, out_dir):
     fig.tight_layout()
     path = os.path.join(out_dir, f"chart-{sweep}-{scene}.png")
     save_png(fig, path)
-    plt.close(fig)
     return path
 
 
@@ -257,26 +256,24 @@ def knob_chart(rows, sweep, family, out_dir):
     fig.tight_layout()
     path = os.path.join(out_dir, f"knob-{sweep}-{family}.png")
     save_png(fig, path)
-    plt.close(fig)
     return path
 
 
-def picture_for(pictures, sweep, family, scenes, method):
+def slug(method):
+    return re.sub(r"[^a-z0-9]+", "-", method.lower()).strip("-")
+
+
+def picture_for(pictures, sweep, family, scenes, method, all_methods):
     """The sweep's failure picture for this family: one of the failing scenes,
     preferring the one named after the method."""
-    slug = re.sub(r"[^a-z0-9]+", "-", method.lower()).strip("-")
     candidates = [p for p in pictures if any(p.startswith(f"{sweep}-{s}") for s in scenes)
                   or p == f"{sweep}-{family}.png"]
-    named = [p for p in candidates if p[:-4].endswith("-" + slug)]
+    named = [p for p in candidates if p[:-4].endswith("-" + slug(method))]
     if named:
         return named[0]
     # Pictures of one method per scene (fxaa, dof) carry no method name.
-    unnamed = [p for p in candidates if not any(p[:-4].endswith("-" + re.sub(r"[^a-z0-9]+", "-", m.lower()).strip("-"))
-                                                 for m in methods_of_all)]
+    unnamed = [p for p in candidates if not any(p[:-4].endswith("-" + slug(m)) for m in all_methods)]
     return unnamed[0] if unnamed else None
-
-
-methods_of_all = []
 
 
 def label_of(method, setting):
@@ -286,7 +283,7 @@ def label_of(method, setting):
 def failure_table(rows, sweep, image_dir, doc_dir):
     rule = FAILURE_RULES[sweep]
     pictures = sorted(os.listdir(image_dir)) if os.path.isdir(image_dir) else []
-    methods_of_all[:] = sorted({r["method"] for r in rows if r["sweep"] == sweep})
+    all_methods = {r["method"] for r in rows if r["sweep"] == sweep}
     lines = [f"Fails when: {rule['rule']}.", "",
              "| method (default setting) | family | knob | holds at | fails at | error where it fails (worst) | picture |",
              "|---|---|---|---|---|---|---|"]
@@ -323,7 +320,7 @@ def failure_table(rows, sweep, image_dir, doc_dir):
             holds = ", ".join(g[0] for g in good) or "–"
             fails = ", ".join(b[0] for b in bad)
             quoted = "; ".join(f"{b[0]}: {b[2]}" for b in bad[:3]) + (" …" if len(bad) > 3 else "")
-            pic = picture_for(pictures, sweep, family, [b[1] for b in bad], method)
+            pic = picture_for(pictures, sweep, family, [b[1] for b in bad], method, all_methods)
             link = ""
             if pic:
                 link = f"[{pic[:-4]}]({os.path.relpath(os.path.join(image_dir, pic), doc_dir)})"
@@ -412,7 +409,6 @@ def contact_sheet(rows, image_dir, out_dir):
     fig.tight_layout()
     path = os.path.join(out_dir, "scenes.png")
     save_png(fig, path)
-    plt.close(fig)
     return path
 
 
