@@ -1,12 +1,34 @@
 #include <darkroom/buffer.h>
 #include <darkroom/error.h>
 
+#include <cstdlib>
 #include <cstring>
-#include <set>
+#include <new>
 
 namespace darkroom {
 
 const char* toString(ChannelType t) { return t == ChannelType::Float32 ? "float32" : "uint32"; }
+
+namespace {
+std::atomic<std::uint64_t> g_nextPlaneId{1};
+}  // namespace
+
+Plane::Plane() : id_(g_nextPlaneId.fetch_add(1, std::memory_order_relaxed)) {}
+Plane::~Plane() = default;
+
+HostPlane::HostPlane(void* storage, std::size_t pixels, std::function<void(void*)> release)
+    : storage_(storage), pixels_(pixels), release_(std::move(release)) {}
+
+HostPlane::~HostPlane() {
+    if (release_) release_(storage_);
+}
+
+std::shared_ptr<HostPlane> newHostPlane(std::size_t pixels, bool zero) {
+    const std::size_t bytes = std::max<std::size_t>(pixels, 1) * 4;
+    void* p = zero ? std::calloc(bytes, 1) : std::malloc(bytes);
+    if (!p) throw std::bad_alloc();
+    return std::make_shared<HostPlane>(p, pixels, [](void* s) { std::free(s); });
+}
 
 Buffer::~Buffer() = default;
 
@@ -24,14 +46,18 @@ std::vector<std::string> Buffer::channelNames() const {
     return out;
 }
 
-static std::string describeMissing(const Buffer& b, std::string_view channel, const char* type) {
+static std::string channelsText(const Buffer& b) {
     std::string have;
     for (const auto& c : b.channels()) {
         if (!have.empty()) have += ", ";
         have += c.name + " (" + toString(c.type) + ")";
     }
-    return "expected a " + std::string(type) + " channel '" + std::string(channel) +
-           "' but the image has " + (have.empty() ? std::string("no channels") : have);
+    return have.empty() ? std::string("no channels") : have;
+}
+
+static std::string describeMissing(const Buffer& b, std::string_view channel, const char* type) {
+    return "expected a " + std::string(type) + " channel '" + std::string(channel) + "' but the image has " +
+           channelsText(b);
 }
 
 const float* Buffer::requireFloat(std::string_view channel) const {
@@ -44,29 +70,32 @@ const std::uint32_t* Buffer::requireUInt(std::string_view channel) const {
     throw Error(describeMissing(*this, channel, "uint32"));
 }
 
+static std::string describeNotWritable(const WritableBuffer& b, std::string_view channel, ChannelType t) {
+    const auto have = b.channelType(channel);
+    if (have && *have == t)
+        return "channel '" + std::string(channel) +
+               "' is shared with the input and cannot be written; list it among the fresh channels of "
+               "Context::derive to replace it";
+    return describeMissing(b, channel, toString(t));
+}
+
 float* WritableBuffer::requireFloat(std::string_view channel) {
     if (float* p = hostFloat(channel)) return p;
-    throw Error(describeMissing(*this, channel, "float32"));
+    throw Error(describeNotWritable(*this, channel, ChannelType::Float32));
 }
 
 std::uint32_t* WritableBuffer::requireUInt(std::string_view channel) {
     if (std::uint32_t* p = hostUInt(channel)) return p;
-    throw Error(describeMissing(*this, channel, "uint32"));
+    throw Error(describeNotWritable(*this, channel, ChannelType::UInt32));
 }
 
 namespace {
 
-// Planar CPU storage: one contiguous 4-byte array per channel.
-class CpuBuffer final : public WritableBuffer {
+// Planar host storage: one shared plane per channel.
+class HostBuffer final : public WritableBuffer {
 public:
-    CpuBuffer(int w, int h, std::vector<ChannelDesc> ch) : w_(w), h_(h), channels_(std::move(ch)) {
+    HostBuffer(int w, int h) : w_(w), h_(h) {
         if (w < 0 || h < 0) throw Error("image size must not be negative");
-        std::set<std::string> seen;
-        for (const auto& c : channels_)
-            if (!seen.insert(c.name).second)
-                throw Error("channel '" + c.name + "' appears twice in one image");
-        data_.resize(channels_.size());
-        for (auto& d : data_) d.assign(std::size_t(w) * std::size_t(h), 0u);
     }
     int width() const override { return w_; }
     int height() const override { return h_; }
@@ -76,19 +105,44 @@ public:
 
     const float* hostFloat(std::string_view n) const override {
         const int i = find(n, ChannelType::Float32);
-        return i < 0 ? nullptr : reinterpret_cast<const float*>(data_[i].data());
+        return i < 0 ? nullptr : static_cast<const float*>(planes_[std::size_t(i)]->data());
     }
     const std::uint32_t* hostUInt(std::string_view n) const override {
         const int i = find(n, ChannelType::UInt32);
-        return i < 0 ? nullptr : data_[i].data();
+        return i < 0 ? nullptr : static_cast<const std::uint32_t*>(planes_[std::size_t(i)]->data());
+    }
+    PlanePtr plane(std::string_view n) const override {
+        for (std::size_t i = 0; i < channels_.size(); ++i)
+            if (channels_[i].name == n) return planes_[i];
+        return nullptr;
     }
     float* hostFloat(std::string_view n) override {
-        const int i = find(n, ChannelType::Float32);
-        return i < 0 ? nullptr : reinterpret_cast<float*>(data_[i].data());
+        return static_cast<float*>(writable(find(n, ChannelType::Float32)));
     }
     std::uint32_t* hostUInt(std::string_view n) override {
-        const int i = find(n, ChannelType::UInt32);
-        return i < 0 ? nullptr : data_[i].data();
+        return static_cast<std::uint32_t*>(writable(find(n, ChannelType::UInt32)));
+    }
+    void setPlane(const ChannelDesc& c, PlanePtr p) override {
+        if (!p) throw Error("channel '" + c.name + "': no plane given");
+        if (p->pixels() != pixelCount())
+            throw Error("channel '" + c.name + "': a plane of " + std::to_string(p->pixels()) +
+                        " values does not fit a " + std::to_string(w_) + "x" + std::to_string(h_) + " image");
+        for (std::size_t i = 0; i < channels_.size(); ++i)
+            if (channels_[i].name == c.name) {
+                channels_[i] = c;
+                planes_[i] = std::move(p);
+                return;
+            }
+        channels_.push_back(c);
+        planes_.push_back(std::move(p));
+    }
+    void removeChannel(std::string_view n) override {
+        for (std::size_t i = 0; i < channels_.size(); ++i)
+            if (channels_[i].name == n) {
+                channels_.erase(channels_.begin() + std::ptrdiff_t(i));
+                planes_.erase(planes_.begin() + std::ptrdiff_t(i));
+                return;
+            }
     }
 
 private:
@@ -97,17 +151,37 @@ private:
             if (channels_[i].name == n) return channels_[i].type == t ? int(i) : -1;
         return -1;
     }
+    void* writable(int i) {
+        if (i < 0) return nullptr;
+        // Only a host plane nobody has sealed is writable: one this buffer was
+        // given fresh by the allocator, never one shared from an input.
+        auto* hp = dynamic_cast<const HostPlane*>(planes_[std::size_t(i)].get());
+        return hp && !hp->sealed() ? const_cast<HostPlane*>(hp)->writableData() : nullptr;
+    }
     int w_, h_;
     std::vector<ChannelDesc> channels_;
+    std::vector<PlanePtr> planes_;
     BufferMetadata meta_;
-    // uint32 storage for both types: same size and alignment as float.
-    std::vector<std::vector<std::uint32_t>> data_;
 };
 
 }  // namespace
 
+std::shared_ptr<WritableBuffer> makeHostBuffer(int width, int height) {
+    return std::make_shared<HostBuffer>(width, height);
+}
+
 std::shared_ptr<WritableBuffer> makeCpuBuffer(int width, int height, std::vector<ChannelDesc> channels) {
-    return std::make_shared<CpuBuffer>(width, height, std::move(channels));
+    auto b = makeHostBuffer(width, height);
+    for (const auto& c : channels) {
+        if (b->hasChannel(c.name)) throw Error("channel '" + c.name + "' appears twice in one image");
+        b->setPlane(c, newHostPlane(b->pixelCount(), true));
+    }
+    return b;
+}
+
+void sealPlanes(const Buffer& b) {
+    for (const auto& c : b.channels())
+        if (auto* hp = dynamic_cast<const HostPlane*>(b.plane(c.name).get())) hp->seal();
 }
 
 bool identical(const Buffer& a, const Buffer& b) {
@@ -120,7 +194,7 @@ bool identical(const Buffer& a, const Buffer& b) {
                                                         : static_cast<const void*>(a.hostUInt(c.name));
         const void* pb = c.type == ChannelType::Float32 ? static_cast<const void*>(b.hostFloat(c.name))
                                                         : static_cast<const void*>(b.hostUInt(c.name));
-        if (bytes && std::memcmp(pa, pb, bytes) != 0) return false;
+        if (pa != pb && bytes && std::memcmp(pa, pb, bytes) != 0) return false;
     }
     return true;
 }

@@ -1,6 +1,7 @@
 // Key functions of the SDK's abstract interfaces, so their vtables and
 // type_info are emitted once, in the SDK library.
 #include <darkroom/capture_backend.h>
+#include <darkroom/colormap.h>
 #include <darkroom/context.h>
 #include <darkroom/error.h>
 #include <darkroom/filter.h>
@@ -25,10 +26,19 @@ Context::~Context() = default;
 
 BufferPtr Context::requireImage(std::string_view port) const {
     BufferPtr b = image(port);
-    if (!b)
-        throw Error("node '" + nodeName() + "': input '" + std::string(port) +
-                    "' is not connected");
+    // The host names the node when it reports the error.
+    if (!b) throw Error("input '" + std::string(port) + "' is not connected");
     return b;
+}
+
+std::string Context::get(const ColorMapIn& p) const {
+    const std::string& spec = getString(p.name());
+    return spec.empty() || isColorMapPreset(spec) ? spec : resolveInputPath(spec);
+}
+
+std::string Context::get(const PathIn& p) const {
+    const std::string& path = getString(p.name());
+    return path.empty() ? path : resolveInputPath(path);
 }
 
 }  // namespace darkroom

@@ -25,6 +25,21 @@ const PortSpec* find(const std::vector<PortSpec>& v, std::string_view n) {
 }
 }  // namespace
 
+PortList::PortList(std::initializer_list<std::reference_wrapper<const PortHandle>> handles) {
+    for (const PortHandle& h : handles) {
+        std::vector<PortSpec>& v = h.output ? outputs : inputs;
+        if (find(v, h.spec.name))
+            throw Error(std::string(h.output ? "output" : "input") + " port '" + h.spec.name + "' is declared twice");
+        v.push_back(h.spec);
+    }
+}
+
+ColorMapIn::ColorMapIn(std::string name, std::string def, std::string doc)
+    : PortHandle(std::move(name), PortType::ColorMap, std::move(doc)) {
+    spec.defaultValue = std::move(def);
+    spec.choices = colorMapPresets();
+}
+
 const PortSpec* PortList::input(std::string_view n) const { return find(inputs, n); }
 const PortSpec* PortList::output(std::string_view n) const { return find(outputs, n); }
 
@@ -142,6 +157,32 @@ void checkValue(const PortSpec& port, const Value& v) {
         const std::string m = e.what();
         if (m.rfind("port '", 0) == 0) throw;
         fail(m);
+    }
+}
+
+void checkPorts(const PortList& ports) {
+    for (const auto* list : {&ports.inputs, &ports.outputs}) {
+        const char* kind = list == &ports.inputs ? "input" : "output";
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const PortSpec& p = (*list)[i];
+            if (p.name.empty()) throw Error(std::string("an ") + kind + " port has no name");
+            for (std::size_t k = 0; k < i; ++k)
+                if ((*list)[k].name == p.name)
+                    throw Error(std::string(kind) + " port '" + p.name + "' is declared twice");
+            if (list == &ports.outputs || p.type == PortType::Image) continue;
+            if (p.type == PortType::Enum && p.choices.empty())
+                throw Error("enum port '" + p.name + "' has no choices");
+            if (p.minimum && p.maximum && *p.minimum > *p.maximum)
+                throw Error("port '" + p.name + "': minimum is above maximum");
+            // The default must be a value the port accepts (an enum default
+            // that is not among the choices is a misspelling).
+            if (p.type == PortType::ColorMap) {
+                (void)p.defaultValue.asString();
+                continue;
+            }
+            if (p.defaultValue.empty()) throw Error("port '" + p.name + "' has no default value");
+            checkValue(p, p.defaultValue);
+        }
     }
 }
 

@@ -1,4 +1,5 @@
-#include "host_context.h"
+#include "hashing.h"
+#include "node_runner.h"
 
 #include <darkroom/error.h>
 #include <darkroom/framework/evaluator.h>
@@ -7,9 +8,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
+#include <cstring>
 #include <functional>
-#include <set>
+#include <unordered_set>
 
 namespace darkroom {
 
@@ -23,12 +24,27 @@ GraphError::GraphError(Diagnostics d)
       diagnostics_(std::move(d)) {}
 GraphError::~GraphError() = default;
 
+const char* toString(NodeProfile::Status s) {
+    switch (s) {
+        case NodeProfile::Status::Ran: return "ran";
+        case NodeProfile::Status::Reassembled: return "reassembled";
+        case NodeProfile::Status::Cached: return "cached";
+    }
+    return "?";
+}
+
 struct Evaluator::NodeState {
-    std::uint64_t key = 0;
-    bool valid = false;
-    std::map<std::string, Value> outputs;
     std::unique_ptr<Filter> filter;
     std::string filterType;
+    // The cache entry: valid when the node's outputs are held.
+    bool valid = false;
+    std::uint64_t valueKey = 0;
+    std::vector<InputRead> reads;
+    std::vector<FileStamp> files;
+    std::map<std::string, Value> outputs;
+    std::map<std::string, OutputOrigin> origins;
+    std::uint64_t lastUsed = 0;
+    // Statistics.
     std::uint64_t executions = 0;
     double seconds = 0;
 };
@@ -41,24 +57,78 @@ struct Evaluator::Progress {
 
 namespace {
 
-std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
-    // splitmix64 finaliser over the running hash: cheap and well distributed.
-    std::uint64_t z = h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
+using Inputs = std::map<std::string, std::vector<Value>>;
+
+// Everything a node is keyed on besides what it reads of its images: its
+// type, where its paths resolve, every value input, and how many images
+// each image input has.
+std::uint64_t valueKey(const Node& n, const PortList& ports, const Inputs& inputs, const EvaluatorOptions& o) {
+    using namespace hashing;
+    std::uint64_t h = mixText(mixText(mixText(0x452821e638d01377ULL, n.type), o.inputBase), o.outputDir);
+    for (const auto& in : ports.inputs) {
+        h = mixText(h, in.name);
+        auto it = inputs.find(in.name);
+        if (in.type == PortType::Image) {
+            h = mix(h, it == inputs.end() ? 0 : it->second.size());
+            continue;
+        }
+        h = mix(h, hashValue(it == inputs.end() || it->second.empty() ? in.defaultValue : it->second.front()));
+    }
+    return h;
 }
 
-std::uint64_t hashString(const std::string& s) { return std::hash<std::string>{}(s); }
+const Buffer* imageAt(const Inputs& inputs, const std::string& port, int index) {
+    auto it = inputs.find(port);
+    if (it == inputs.end() || index < 0 || index >= int(it->second.size())) return nullptr;
+    return it->second[std::size_t(index)].asImage().get();
+}
 
-// Filters of a type that declares itself Unsafe share one lock.
-std::mutex& typeLock(const std::string& type) {
-    static std::mutex guard;
-    static std::map<std::string, std::unique_ptr<std::mutex>> locks;
-    std::lock_guard<std::mutex> g(guard);
-    auto& m = locks[type];
-    if (!m) m = std::make_unique<std::mutex>();
-    return *m;
+BufferPtr imagePtrAt(const Inputs& inputs, const std::string& port, int index) {
+    auto it = inputs.find(port);
+    if (it == inputs.end() || index < 0 || index >= int(it->second.size())) return nullptr;
+    return it->second[std::size_t(index)].asImage();
+}
+
+// Same channels, same planes (by identity) and same metadata.
+bool samePlanes(const Buffer& a, const Buffer& b) {
+    if (a.width() != b.width() || a.height() != b.height() || a.channels() != b.channels()) return false;
+    for (const auto& c : a.channels())
+        if (a.plane(c.name) != b.plane(c.name)) return false;
+    return a.metadata() == b.metadata();
+}
+
+// A plane recomputed bit for bit as before keeps the previous plane, so nodes
+// downstream that read it keep their cache. Returns the previous buffer
+// itself when nothing at all changed.
+BufferPtr keepUnchangedPlanes(const BufferPtr& fresh, const BufferPtr& previous) {
+    if (!previous || previous->width() != fresh->width() || previous->height() != fresh->height()) return fresh;
+    const std::size_t bytes = fresh->pixelCount() * 4;
+    std::shared_ptr<WritableBuffer> merged;
+    for (const auto& c : fresh->channels()) {
+        const PlanePtr now = fresh->plane(c.name);
+        const PlanePtr before = previous->plane(c.name);
+        if (!before || before == now || previous->channelType(c.name) != c.type) continue;
+        if (bytes && std::memcmp(now->data(), before->data(), bytes) != 0) continue;
+        if (!merged) {
+            merged = makeHostBuffer(fresh->width(), fresh->height());
+            merged->metadata() = fresh->metadata();
+            for (const auto& x : fresh->channels()) merged->setPlane(x, fresh->plane(x.name));
+        }
+        merged->setPlane(c, before);
+    }
+    const BufferPtr result = merged ? BufferPtr(merged) : fresh;
+    return samePlanes(*result, *previous) ? previous : result;
+}
+
+std::size_t planeBytes(const std::map<std::string, Value>& outputs, std::unordered_set<const Plane*>& seen) {
+    std::size_t total = 0;
+    for (const auto& [port, v] : outputs)
+        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b)
+            for (const auto& c : (*b)->channels()) {
+                const PlanePtr p = (*b)->plane(c.name);
+                if (p && seen.insert(p.get()).second) total += p->pixels() * 4;
+            }
+    return total;
 }
 
 }  // namespace
@@ -68,8 +138,6 @@ Evaluator::~Evaluator() = default;
 
 void Evaluator::setOptions(EvaluatorOptions options) {
     std::lock_guard<std::mutex> lock(mutex_);
-    // Paths change what readers and writers do: cached results are stale.
-    if (options.inputBase != options_.inputBase || options.outputDir != options_.outputDir) states_.clear();
     options_ = std::move(options);
 }
 
@@ -85,50 +153,65 @@ double Evaluator::lastSeconds(const std::string& node) const {
     return it == states_.end() ? 0.0 : it->second->seconds;
 }
 
+std::vector<NodeProfile> Evaluator::lastProfile() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return profile_;
+}
+
+std::size_t Evaluator::cachedBytes() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return cachedBytesLocked();
+}
+
+std::size_t Evaluator::cachedBytesLocked() const {
+    std::unordered_set<const Plane*> seen;
+    std::size_t total = 0;
+    for (const auto& [name, st] : states_)
+        if (st->valid) total += planeBytes(st->outputs, seen);
+    return total;
+}
+
 void Evaluator::clearCache() {
     std::lock_guard<std::mutex> lock(mutex_);
     states_.clear();
 }
 
-std::uint64_t Evaluator::cacheKey(const Graph& g, const std::string& name,
-                                  std::map<std::string, std::uint64_t>& memo) const {
-    if (auto it = memo.find(name); it != memo.end()) return it->second;
-    const Node* n = g.node(name);
-    std::uint64_t h = mix(hashString(n->type), n->version);
-    for (const auto& e : g.edgesInto(name)) {
-        h = mix(h, cacheKey(g, e.from.node, memo));
-        h = mix(h, hashString(e.from.port));
-        h = mix(h, hashString(e.to.port));
-    }
-    memo[name] = h;
-    return h;
-}
-
-Value Evaluator::evaluate(const Graph& graph, const std::string& node, const std::string& port) {
+Value Evaluator::evaluate(const Graph& graph, const std::string& node, const std::string& port,
+                          const std::atomic<bool>* cancel) {
     const Node* n = graph.node(node);
     if (!n) throw Error("no node named '" + node + "'");
     if (!n->placeholder && !graph.ports(*n).output(port))
-        throw Error("node '" + node + "' (" + n->type + ") has no output '" + port + "'");
-    ensure(graph, {node});
+        throw Error(nodeLabel(node, n->type) + " has no output '" + port + "'");
+    ensure(graph, {node}, cancel);
     std::lock_guard<std::mutex> lock(mutex_);
     return states_.at(node)->outputs.at(port);
 }
 
-BufferPtr Evaluator::evaluateImage(const Graph& graph, const std::string& node, const std::string& port) {
-    return evaluate(graph, node, port).asImage();
+BufferPtr Evaluator::evaluateImage(const Graph& graph, const std::string& node, const std::string& port,
+                                   const std::atomic<bool>* cancel) {
+    return evaluate(graph, node, port, cancel).asImage();
 }
 
-void Evaluator::run(const Graph& graph, std::vector<std::string> nodes) {
+void Evaluator::run(const Graph& graph, std::vector<std::string> nodes, const std::atomic<bool>* cancel) {
     if (nodes.empty()) nodes = graph.sinks();
     if (nodes.empty())
         throw Error("the pipeline has no output node (a node without outputs, such as ImageWriter)");
     for (const auto& n : nodes)
         if (!graph.node(n)) throw Error("no node named '" + n + "'");
-    ensure(graph, nodes);
+    ensure(graph, nodes, cancel);
 }
 
-void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets) {
-    cancelled_ = false;
+void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* external) {
+    // The internal flag is cleared when a run ends, not when one starts, so a
+    // cancel() that arrives before the run starts still cancels it.
+    struct ClearOnExit {
+        std::atomic<bool>* flag;
+        ~ClearOnExit() {
+            if (flag) *flag = false;
+        }
+    } clear{external ? nullptr : &cancelled_};
+    const std::atomic<bool>& cancel = external ? *external : cancelled_;
+
     // The part of the graph the targets depend on.
     std::set<std::string> needed;
     std::function<void(const std::string&)> collect = [&](const std::string& n) {
@@ -147,7 +230,6 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets) 
 
     // Depth levels: a node runs after everything it reads; nodes of one level
     // are independent and run concurrently.
-    std::map<std::string, std::uint64_t> memo;
     std::map<std::string, int> level;
     std::function<int(const std::string&)> depth = [&](const std::string& n) -> int {
         if (auto it = level.find(n); it != level.end()) return it->second;
@@ -156,28 +238,43 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets) 
         return level[n] = d;
     };
     std::vector<std::vector<std::string>> waves;
+    // Outputs still to be read in this evaluation, for retainIntermediate = false.
+    std::map<std::string, int> pendingReaders;
     {
         std::lock_guard<std::mutex> lock(mutex_);
+        // States of nodes that were removed, renamed or retyped are freed.
+        for (auto it = states_.begin(); it != states_.end();) {
+            const Node* n = g.node(it->first);
+            if (!n || n->placeholder || (it->second->filter && it->second->filterType != n->type))
+                it = states_.erase(it);
+            else
+                ++it;
+        }
+        ++clock_;
+        profile_.clear();
         for (const auto& n : g.topologicalOrder()) {
             if (!needed.count(n)) continue;
-            const std::uint64_t key = cacheKey(g, n, memo);
             auto& st = states_[n];
             if (!st) st = std::make_unique<NodeState>();
-            if (st->valid && st->key == key) continue;
-            st->valid = false;
             const int d = depth(n);
-            if (int(waves.size()) <= d) waves.resize(d + 1);
-            waves[d].push_back(n);
+            if (int(waves.size()) <= d) waves.resize(std::size_t(d) + 1);
+            waves[std::size_t(d)].push_back(n);
+            for (const auto& e : g.edgesInto(n)) ++pendingReaders[e.from.node];
         }
     }
+    const std::set<std::string> targetSet(targets.begin(), targets.end());
+
     Progress progress;
     for (const auto& w : waves) progress.total += w.size();
     progress_ = &progress;
+    struct ResetProgress {
+        Progress** p;
+        ~ResetProgress() { *p = nullptr; }
+    } resetProgress{&progress_};
 
     tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
     for (const auto& wave : waves) {
-        if (wave.empty()) continue;
-        if (cancelled_) throw Cancelled();
+        if (cancel) throw Cancelled();
         std::vector<std::exception_ptr> errors(wave.size());
         arena.execute([&] {
             tbb::parallel_for(std::size_t(0), wave.size(), [&](std::size_t i) {
@@ -188,7 +285,7 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets) 
                         std::lock_guard<std::mutex> lock(mutex_);
                         st = states_.at(n.name).get();
                     }
-                    execute(g, n, memo.at(n.name), *st);
+                    process(g, n, *st, cancel);
                 } catch (...) {
                     errors[i] = std::current_exception();
                 }
@@ -197,105 +294,168 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets) 
         // Report the first failure in graph order, so messages do not depend
         // on scheduling.
         for (auto& e : errors)
-            if (e) {
-                progress_ = nullptr;
-                std::rethrow_exception(e);
-            }
+            if (e) std::rethrow_exception(e);
+        if (!options_.retainIntermediate) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            for (const auto& n : wave)
+                for (const auto& e : g.edgesInto(n))
+                    if (--pendingReaders[e.from.node] == 0 && !targetSet.count(e.from.node)) {
+                        NodeState& up = *states_.at(e.from.node);
+                        up.valid = false;
+                        up.outputs.clear();
+                        up.origins.clear();
+                    }
+        }
     }
-    progress_ = nullptr;
-    if (cancelled_) throw Cancelled();
+    if (cancel) throw Cancelled();
+    std::lock_guard<std::mutex> lock(mutex_);
+    enforceCap(targetSet);
 }
 
-void Evaluator::execute(const Graph& g, const Node& n, std::uint64_t key, NodeState& st) {
-    const PortList& ports = g.ports(n);
-    HostContext::Setup setup;
-    setup.nodeName = n.name;
-    setup.ports = &ports;
-    setup.inputBase = options_.inputBase;
-    setup.outputDir = options_.outputDir;
-    setup.registry = &g.registry();
-    setup.cancelFlag = &cancelled_;
-    setup.onWarning = [&](const std::string& m) {
-        if (options_.onWarning) {
-            Diagnostic d;
-            d.severity = Diagnostic::Severity::Warning;
-            d.where = "node '" + n.name + "'";
-            d.message = m;
-            d.node = n.name;
-            options_.onWarning(d);
-        }
-    };
-    setup.onProgress = [&](double f) {
-        if (!options_.onProgress || !progress_) return;
-        std::lock_guard<std::mutex> lock(progress_->mutex);
-        options_.onProgress((double(progress_->done) + f) / double(std::max<std::size_t>(1, progress_->total)),
-                            n.name);
-    };
+void Evaluator::enforceCap(const std::set<std::string>& targets) {
+    if (options_.cacheBytes == 0) return;
+    if (cachedBytesLocked() <= options_.cacheBytes) return;
+    // Least recently used first; what this evaluation asked for last of all.
+    std::vector<std::pair<std::uint64_t, std::string>> order;
+    for (const auto& [name, st] : states_)
+        if (st->valid) order.emplace_back(st->lastUsed * 2 + (targets.count(name) ? 1 : 0), name);
+    std::sort(order.begin(), order.end());
+    for (const auto& [age, name] : order) {
+        if (cachedBytesLocked() <= options_.cacheBytes) break;
+        NodeState& st = *states_.at(name);
+        st.valid = false;
+        st.outputs.clear();
+        st.origins.clear();
+    }
+}
 
+void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std::atomic<bool>& cancel) {
+    const PortList& ports = g.ports(n);
+    const std::string label = nodeLabel(n.name, n.type);
+
+    // Inputs: the upstream outputs (each up to date: it is in an earlier
+    // wave), else the node's parameters.
+    Inputs inputs;
     for (const auto& in : ports.inputs) {
-        const auto edges = g.edgesInto(n.name, in.name);
         std::vector<Value> values;
-        for (const auto& e : edges) {
+        for (const auto& e : g.edgesInto(n.name, in.name)) {
             std::lock_guard<std::mutex> lock(mutex_);
             const NodeState& up = *states_.at(e.from.node);
             auto it = up.outputs.find(e.from.port);
-            if (it == up.outputs.end())
-                throw Error("node '" + n.name + "': upstream " + e.from.str() + " produced nothing");
-            Value v = it->second;
-            if (in.type == PortType::Float && std::holds_alternative<std::int64_t>(v.storage()))
-                v = Value(v.asFloat());
-            values.push_back(std::move(v));
+            if (!up.valid || it == up.outputs.end())
+                throw Error(label + ": upstream " + e.from.str() + " produced nothing");
+            values.push_back(it->second);
         }
-        if (values.empty() && in.type != PortType::Image) {
+        if (values.empty() && in.type != PortType::Image)
             if (const Value* p = n.parameter(in.name)) values.push_back(*p);
-        }
-        if (in.type == PortType::Image) {
-            for (const auto& v : values) {
-                const BufferPtr& b = v.asImage();
-                if (!b) throw Error("node '" + n.name + "': input '" + in.name + "' received no image");
-                for (const auto& c : in.channels)
-                    if (!b->hasChannel(c)) {
-                        std::string have;
-                        for (const auto& x : b->channelNames()) have += (have.empty() ? "" : ", ") + x;
-                        throw Error("node '" + n.name + "' (" + n.type + "): input '" + in.name +
-                                    "' needs channel '" + c + "', but the image has " +
-                                    (have.empty() ? std::string("no channels") : have));
-                    }
+        if (!values.empty()) inputs[in.name] = std::move(values);
+    }
+    const std::uint64_t key = valueKey(n, ports, inputs, options_);
+
+    NodeProfile profile;
+    profile.node = n.name;
+    profile.type = n.type;
+
+    // The cache: same value inputs, same planes read, same files.
+    bool hit = st.valid && st.valueKey == key;
+    for (std::size_t i = 0; hit && i < st.reads.size(); ++i) {
+        const Buffer* b = imageAt(inputs, st.reads[i].port, st.reads[i].index);
+        hit = b && stillMatches(st.reads[i], *b);
+    }
+    for (std::size_t i = 0; hit && i < st.files.size(); ++i) hit = stampOf(st.files[i].path) == st.files[i];
+
+    if (hit) {
+        std::map<std::string, Value> outputs = st.outputs;
+        bool changed = false;
+        for (auto& [port, value] : outputs) {
+            const OutputOrigin& o = st.origins.at(port);
+            if (o.kind == OutputOrigin::Kind::Forward) {
+                BufferPtr now = imagePtrAt(inputs, o.port, o.index);
+                if (now != value.asImage()) {
+                    value = Value(std::move(now));
+                    changed = true;
+                }
+            } else if (o.kind == OutputOrigin::Kind::Derived) {
+                const Buffer* in = imageAt(inputs, o.port, o.index);
+                const BufferPtr& before = value.asImage();
+                BufferPtr now = rederive(o, *before, *in);
+                if (!samePlanes(*now, *before)) {
+                    value = Value(std::move(now));
+                    changed = true;
+                }
             }
         }
-        if (!values.empty()) setup.inputs[in.name] = std::move(values);
+        profile.status = changed ? NodeProfile::Status::Reassembled : NodeProfile::Status::Cached;
+        std::lock_guard<std::mutex> lock(mutex_);
+        st.outputs = std::move(outputs);
+        st.lastUsed = clock_;
+    } else {
+        if (!st.filter || st.filterType != n.type) {
+            st.filter = g.registry().createFilter(n.type);
+            st.filterType = n.type;
+        }
+        NodeCall call;
+        call.filter = st.filter.get();
+        call.ports = &ports;
+        call.name = n.name;
+        call.type = n.type;
+        call.inputs = std::move(inputs);
+        call.inputBase = options_.inputBase;
+        call.outputDir = options_.outputDir;
+        call.registry = &g.registry();
+        call.cancel = &cancel;
+        call.onWarning = [&](const std::string& m) {
+            if (!options_.onWarning) return;
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.where = nodeLabel(n.name, n.type);
+            d.message = m;
+            d.node = n.name;
+            options_.onWarning(d);
+        };
+        call.onProgress = [&](double f) {
+            if (!options_.onProgress || !progress_) return;
+            std::lock_guard<std::mutex> lock(progress_->mutex);
+            options_.onProgress((double(progress_->done) + f) / double(std::max<std::size_t>(1, progress_->total)),
+                                n.name);
+        };
+        // The previous entry is dropped first: its planes go back to the pool
+        // for this execution, except those kept for comparison.
+        std::map<std::string, Value> previous;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            previous = std::move(st.outputs);
+            st.valid = false;
+            st.outputs.clear();
+        }
+        NodeResult r = runNode(call);
+        for (auto& [port, value] : r.outputs) {
+            const auto* b = std::get_if<BufferPtr>(&value.storage());
+            if (!b || !*b || r.origins[port].kind == OutputOrigin::Kind::Forward) continue;
+            auto it = previous.find(port);
+            const BufferPtr before = it == previous.end() ? nullptr : [&]() -> BufferPtr {
+                const auto* p = std::get_if<BufferPtr>(&it->second.storage());
+                return p ? *p : nullptr;
+            }();
+            value = Value(keepUnchangedPlanes(*b, before));
+        }
+        profile.status = NodeProfile::Status::Ran;
+        profile.seconds = r.seconds;
+        profile.bytesAllocated = r.bytesAllocated;
+        std::lock_guard<std::mutex> lock(mutex_);
+        st.outputs = std::move(r.outputs);
+        st.origins = std::move(r.origins);
+        st.reads = std::move(r.reads);
+        st.files = std::move(r.files);
+        st.valueKey = key;
+        st.valid = true;
+        st.lastUsed = clock_;
+        ++st.executions;
+        st.seconds = r.seconds;
     }
-
-    if (!st.filter || st.filterType != n.type) {
-        st.filter = g.registry().createFilter(n.type);
-        st.filterType = n.type;
-    }
-    HostContext ctx(std::move(setup));
-    const auto t0 = std::chrono::steady_clock::now();
-    try {
-        std::unique_lock<std::mutex> typeGuard;
-        if (st.filter->threadSafety() == ThreadSafety::Unsafe)
-            typeGuard = std::unique_lock<std::mutex>(typeLock(n.type));
-        st.filter->execute(ctx);
-    } catch (const Cancelled&) {
-        throw;
-    } catch (const std::exception& e) {
-        // One error boundary for every call into a plugin.
-        throw Error("node '" + n.name + "' (" + n.type + "): " + e.what());
-    } catch (...) {
-        throw Error("node '" + n.name + "' (" + n.type + "): failed with an unknown exception");
-    }
-    if (cancelled_) throw Cancelled();
-    for (const auto& out : ports.outputs)
-        if (!ctx.outputs().count(out.name))
-            throw Error("node '" + n.name + "' (" + n.type + ") did not produce its output '" + out.name + "'");
 
     std::lock_guard<std::mutex> lock(mutex_);
-    st.outputs = std::move(ctx.outputs());
-    st.key = key;
-    st.valid = true;
-    ++st.executions;
-    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    profile_.push_back(std::move(profile));
     if (progress_) {
         std::lock_guard<std::mutex> plock(progress_->mutex);
         ++progress_->done;

@@ -1,4 +1,6 @@
 #include "host_context.h"
+#include "node_runner.h"
+#include "plane_pool.h"
 
 #include <darkroom/error.h>
 #include <darkroom/capture_backend.h>
@@ -33,8 +35,13 @@ public:
     }
     std::string resolveInputPath(std::string_view p) const override { return inner_.resolveInputPath(p); }
     std::string resolveOutputPath(std::string_view p) const override { return inner_.resolveOutputPath(p); }
-    std::shared_ptr<WritableBuffer> allocate(int w, int h, std::vector<ChannelDesc> c) override {
-        return inner_.allocate(w, h, std::move(c));
+    void readsFile(const std::string&) override {}
+    std::shared_ptr<WritableBuffer> allocate(int w, int h, std::vector<ChannelDesc> c, Fill fill) override {
+        return inner_.allocate(w, h, std::move(c), fill);
+    }
+    std::shared_ptr<WritableBuffer> derive(const BufferPtr& in, std::vector<ChannelDesc> fresh, Fill fill,
+                                           std::vector<std::string> drop) override {
+        return inner_.derive(in, std::move(fresh), fill, std::move(drop));
     }
     void setOutput(std::string_view port, Value v) override { inner_.setOutput(port, std::move(v)); }
     std::unique_ptr<CaptureBackend> createBackend(std::string_view type) const override {
@@ -61,35 +68,24 @@ std::unique_ptr<Context> makeStandaloneContext(const FilterRunOptions& options, 
 
 FilterRunResult runFilter(Filter& filter, const std::map<std::string, std::vector<Value>>& inputs,
                           const FilterRunOptions& options) {
+    // The production path: the same node runner the evaluator uses.
     const PortList ports = filter.ports();
-    HostContext::Setup setup;
-    setup.nodeName = "runFilter";
-    setup.ports = &ports;
-    setup.inputBase = options.inputBase;
-    setup.outputDir = options.outputDir;
-    setup.registry = options.registry;
     FilterRunResult result;
-    setup.onWarning = [&](const std::string& m) { result.warnings.push_back(m); };
-    for (const auto& [name, values] : inputs) {
-        const PortSpec* spec = ports.input(name);
-        if (!spec) throw Error("runFilter: the filter has no input '" + name + "'");
-        std::vector<Value> vs;
-        for (const auto& v : values) {
-            Value x = v;
-            if (spec->type == PortType::Float && std::holds_alternative<std::int64_t>(x.storage()))
-                x = Value(x.asFloat());
-            if (spec->type != PortType::Image) checkValue(*spec, x);
-            vs.push_back(std::move(x));
-        }
-        setup.inputs[name] = std::move(vs);
-    }
-    HostContext ctx(std::move(setup));
+    NodeCall call;
+    call.filter = &filter;
+    call.ports = &ports;
+    call.name = options.nodeName;
+    call.type = options.nodeType;
+    call.inputs = inputs;
+    call.inputBase = options.inputBase;
+    call.outputDir = options.outputDir;
+    call.registry = options.registry;
+    call.onWarning = [&](const std::string& m) { result.warnings.push_back(m); };
+    if (options.poison) PlanePool::shared().setPoison(true);
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-    arena.execute([&] { filter.execute(ctx); });
-    for (const auto& out : ports.outputs)
-        if (!ctx.outputs().count(out.name))
-            throw Error("runFilter: the filter did not produce its output '" + out.name + "'");
-    result.outputs = std::move(ctx.outputs());
+    NodeResult r;
+    arena.execute([&] { r = runNode(call); });
+    result.outputs = std::move(r.outputs);
     return result;
 }
 

@@ -22,23 +22,6 @@ struct CinemaReader::Cache {
 CinemaReader::CinemaReader() : cache_(std::make_unique<Cache>()) {}
 CinemaReader::~CinemaReader() = default;
 
-PortList CinemaReader::ports() const {
-    PortList p;
-    p.pathIn("database", "", "The Cinema database: a .cdb folder or its data.csv");
-    p.stringIn("parameters", "",
-               "Which entry, as column=value pairs: 'phi=30, theta=45' (numbers snap to the "
-               "nearest value present; unnamed columns take any value), or an SQL WHERE "
-               "expression: 'phi > 0 AND theta = 0' (first matching row). Empty = the first row. "
-               "In a composable image set the rows pick one layer ('object=000'), read whole");
-    p.stringIn("file", "", "FILE column to read (e.g. FILE2); empty = the first FILE column");
-    p.boolIn("strict", false, "Treat irregular rows in data.csv as errors instead of warnings");
-    p.imageOut("image",
-               "The entry's product: every EXR channel; linear R, G, B(, A) for 8-bit images; .npz "
-               "members and .vti point arrays as channels; a composable image set's layer with "
-               "depth as Z and colormap.<channel> attributes");
-    return p;
-}
-
 std::shared_ptr<const CinemaDatabase> CinemaReader::open(const std::string& path, bool strict) {
     std::error_code ec;
     const fs::path csv = fs::is_directory(path, ec) ? fs::path(path) / "data.csv" : fs::path(path);
@@ -57,18 +40,20 @@ std::shared_ptr<const CinemaDatabase> CinemaReader::open(const std::string& path
 }
 
 void CinemaReader::execute(Context& ctx) {
-    const std::string& given = ctx.getString("database");
-    if (given.empty()) throw Error("CinemaReader: no database given; set 'database' to a .cdb folder");
-    const auto db = open(ctx.resolveInputPath(given), ctx.getBool("strict"));
+    const std::string path = ctx.get(database_);
+    if (path.empty()) throw Error("no database given; set 'database' to a .cdb folder");
+    const auto db = open(path, ctx.get(strict_));
+    // The cache key: data.csv and the product read, by modification time and size.
+    ctx.readsFile(db->csvPath());
     for (const auto& w : db->warnings()) ctx.warn(w.where + ": " + w.message);
-    const std::string& parameters = ctx.getString("parameters");
-    const std::string& file = ctx.getString("file");
+    const std::string& parameters = ctx.get(parameters_);
+    const std::string& file = ctx.get(file_);
     Diagnostics notes;
     std::shared_ptr<WritableBuffer> image;
     if (isComposableImageSet(*db) && file.empty()) {
         // Every channel row of the chosen layer is merged into one buffer.
         const auto rows = parameters.empty() ? std::vector<std::size_t>{0} : db->selectWhere(parameters);
-        if (ctx.cancelled()) return;
+        for (const std::size_t r : rows) ctx.readsFile(db->productPath(r, ""));
         image = readComposableRows(*db, rows, &notes);
     } else {
         std::size_t row = 0;
@@ -85,12 +70,13 @@ void CinemaReader::execute(Context& ctx) {
             for (const auto& note : match.notes) ctx.warn(note);
             row = match.row;
         }
-        if (ctx.cancelled()) return;
-        image = readCinemaProduct(db->productPath(row, file), &notes);
+        const std::string product = db->productPath(row, file);
+        ctx.readsFile(product);
+        image = readCinemaProduct(product, &notes);
     }
     for (const auto& n : notes) ctx.warn(n.where + ": " + n.message);
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(image)));
+    ctx.set(result_, image);
 }
 
 }  // namespace darkroom

@@ -15,10 +15,23 @@ class CinemaReader : public Filter {
 public:
     CinemaReader();
     ~CinemaReader() override;
-    PortList ports() const override;
+    PortList ports() const override { return {database_, parameters_, file_, strict_, result_}; }
     void execute(Context& ctx) override;
 
 private:
+    PathIn database_{"database", "", "The Cinema database: a .cdb folder or its data.csv"};
+    StringIn parameters_{"parameters", "",
+                         "Which entry, as column=value pairs: 'phi=30, theta=45' (numbers snap to the "
+                         "nearest value present; unnamed columns take any value), or an SQL WHERE "
+                         "expression: 'phi > 0 AND theta = 0' (first matching row). Empty = the first row. "
+                         "In a composable image set the rows pick one layer ('object=000'), read whole"};
+    StringIn file_{"file", "", "FILE column to read (e.g. FILE2); empty = the first FILE column"};
+    BoolIn strict_{"strict", false, "Treat irregular rows in data.csv as errors instead of warnings"};
+    ImageOut result_{"image",
+                     "The entry's product: every EXR channel; linear R, G, B(, A) for 8-bit images; .npz "
+                     "members and .vti point arrays as channels; a composable image set's layer with "
+                     "depth as Z and colormap.<channel> attributes"};
+
     // The parsed data.csv, kept while the file is unchanged so that moving a
     // parameter slider in the editor does not re-read it.
     struct Cache;

@@ -17,12 +17,12 @@ namespace {
 // below 8-bit resolution for every preset, and both ends are exact samples.
 constexpr int kTableSize = 4096;
 
-std::string chooseChannel(const Buffer& image, const std::string& asked, const std::string& node) {
+std::string chooseChannel(const Buffer& image, const std::string& asked) {
     if (!asked.empty()) {
         if (!image.hasChannel(asked)) {
             std::string have;
             for (const auto& c : image.channels()) have += (have.empty() ? "" : ", ") + c.name;
-            throw Error(node + ": the image has no channel '" + asked + "'; it has " +
+            throw Error("the image has no channel '" + asked + "'; it has " +
                         (have.empty() ? std::string("no channels") : have));
         }
         return asked;
@@ -31,7 +31,7 @@ std::string chooseChannel(const Buffer& image, const std::string& asked, const s
         if (c.type == ChannelType::Float32 && c.name != "Z" && c.name != "A") return c.name;
     std::string have;
     for (const auto& c : image.channels()) have += (have.empty() ? "" : ", ") + c.name;
-    throw Error(node + ": no scalar channel to map (the image has " +
+    throw Error("no scalar channel to map (the image has " +
                 (have.empty() ? std::string("no channels") : have) + "); set 'channel'");
 }
 
@@ -44,55 +44,24 @@ double position(double v, double low, double high) {
 
 }  // namespace
 
-PortList ColorMapping::ports() const {
-    PortList p;
-    p.imageIn("image", "Image holding the scalar channel (and optionally depth Z)");
-    p.stringIn("channel", "",
-               "Scalar channel to map (float32 or uint32); empty = the first float32 channel "
-               "other than Z and A");
-    p.colorMapIn("colormap", "viridis",
-                 "Preset name or a ParaView colour-map JSON file (relative to the pipeline file)");
-    p.enumIn("range", {"automatic", "manual"}, "automatic",
-             "automatic: the finite minimum and maximum of the channel over non-background pixels; "
-             "manual: minimum and maximum below");
-    const double big = 1e30;  // no practical limit on data values
-    p.floatIn("minimum", 0.0, -big, big, "Value mapped to the start of the map (manual range)");
-    p.floatIn("maximum", 1.0, -big, big,
-              "Value mapped to the end of the map (manual range); below minimum flips the map");
-    p.colorIn("nanColor", Color{1.0f, 1.0f, 0.0f, 1.0f}, "Linear colour for NaN values");
-    p.boolIn("useMapNanColor", false,
-             "Use the colour map's own NaN colour when it defines one (ParaView JSON NanColor, "
-             "cool-to-warm, blackbody) instead of nanColor");
-    p.floatIn("opacity", 1.0, 0.0, 1.0, "Alpha of mapped pixels (NaN pixels take nanColor's alpha)");
-    p.imageOut("image",
-               "Linear R, G, B, A (straight alpha) plus the input's Z; pixels whose Z is +inf are "
-               "transparent black",
-               {"R", "G", "B", "A"});
-    p.valueOut("usedMinimum", PortType::Float, "Value mapped to the start of the map (NaN if none)");
-    p.valueOut("usedMaximum", PortType::Float, "Value mapped to the end of the map (NaN if none)");
-    return p;
-}
-
 void ColorMapping::execute(Context& ctx) {
-    const BufferPtr in = ctx.requireImage("image");
-    const std::string node = "ColorMapping '" + ctx.nodeName() + "'";
-    const std::string channel = chooseChannel(*in, ctx.getString("channel"), node);
+    const BufferPtr in = ctx.get(image_);
+    const std::string channel = chooseChannel(*in, ctx.get(channel_));
     ScalarChannel scalar{in->hostFloat(channel), in->hostUInt(channel)};
     const float* depth = in->hostFloat("Z");
     const int w = in->width(), h = in->height();
 
-    const std::string& spec = ctx.getString("colormap");
-    const ColorMapData map = loadColorMap(isColorMapPreset(spec) || spec.empty() ? spec : ctx.resolveInputPath(spec));
+    const ColorMapData map = loadColorMap(ctx.get(colormap_));
     const std::vector<Color> table = map.table(kTableSize);
-    const Color nan = ctx.getBool("useMapNanColor") && map.hasNanColor ? map.nanColor : ctx.getColor("nanColor");
-    const float alpha = float(ctx.getFloat("opacity"));
+    const Color nan = ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_);
+    const float alpha = float(ctx.get(opacity_));
 
     double low = std::numeric_limits<double>::quiet_NaN(), high = low;
-    if (ctx.getString("range") == "manual") {
-        low = ctx.getFloat("minimum");
-        high = ctx.getFloat("maximum");
+    if (ctx.get(range_) == Range::Manual) {
+        low = ctx.get(minimum_);
+        high = ctx.get(maximum_);
         if (!std::isfinite(low) || !std::isfinite(high))
-            throw Error(node + ": a manual range needs finite minimum and maximum");
+            throw Error("a manual range needs finite minimum and maximum");
     } else {
         const ScalarRange r = finiteRange(ctx, scalar, depth, w, h);
         if (r.found) {
@@ -100,11 +69,10 @@ void ColorMapping::execute(Context& ctx) {
             high = r.high;
         }
     }
-    if (ctx.cancelled()) return;
 
-    std::vector<ChannelDesc> channels{{"R"}, {"G"}, {"B"}, {"A"}};
-    if (depth) channels.push_back({"Z"});
-    auto out = ctx.allocate(w, h, channels);
+    // Colour is written for every pixel; depth is the input's plane, shared.
+    auto out = ctx.allocate(w, h, {"R", "G", "B", "A"}, Fill::None);
+    if (depth) out->setPlane({"Z"}, in->plane("Z"));
     out->metadata() = in->metadata();
     float* R = out->hostFloat("R");
     float* G = out->hostFloat("G");
@@ -138,12 +106,10 @@ void ColorMapping::execute(Context& ctx) {
                 A[i] = c.a;
             }
     });
-    if (ctx.cancelled()) return;
-    if (depth) std::copy(depth, depth + in->pixelCount(), out->hostFloat("Z"));
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
-    ctx.setOutput("usedMinimum", Value(low));
-    ctx.setOutput("usedMaximum", Value(high));
+    ctx.set(result_, out);
+    ctx.set(usedMinimum_, low);
+    ctx.set(usedMaximum_, high);
 }
 
 }  // namespace darkroom

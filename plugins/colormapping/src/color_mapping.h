@@ -8,8 +8,42 @@ namespace darkroom {
 // transparent.
 class ColorMapping final : public Filter {
 public:
-    PortList ports() const override;
+    enum class Range { Automatic, Manual };
+
+    PortList ports() const override {
+        return {image_,    channel_, colormap_, range_,  minimum_,      maximum_,     nanColor_,
+                useMapNanColor_, opacity_, result_, usedMinimum_, usedMaximum_};
+    }
     void execute(Context& ctx) override;
+
+private:
+    static constexpr double kBig = 1e30;  // no practical limit on data values
+
+    ImageIn image_{"image", "Image holding the scalar channel (and optionally depth Z)"};
+    StringIn channel_{"channel", "",
+                      "Scalar channel to map (float32 or uint32); empty = the first float32 channel "
+                      "other than Z and A"};
+    ColorMapIn colormap_{"colormap", "viridis",
+                         "Preset name or a ParaView colour-map JSON file (relative to the pipeline file)"};
+    EnumIn<Range> range_{"range",
+                         {{Range::Automatic, "automatic"}, {Range::Manual, "manual"}},
+                         Range::Automatic,
+                         "automatic: the finite minimum and maximum of the channel over non-background pixels; "
+                         "manual: minimum and maximum below"};
+    FloatIn minimum_{"minimum", 0.0, -kBig, kBig, "Value mapped to the start of the map (manual range)"};
+    FloatIn maximum_{"maximum", 1.0, -kBig, kBig,
+                     "Value mapped to the end of the map (manual range); below minimum flips the map"};
+    ColorIn nanColor_{"nanColor", Color{1.0f, 1.0f, 0.0f, 1.0f}, "Linear colour for NaN values"};
+    BoolIn useMapNanColor_{"useMapNanColor", false,
+                           "Use the colour map's own NaN colour when it defines one (ParaView JSON NanColor, "
+                           "cool-to-warm, blackbody) instead of nanColor"};
+    FloatIn opacity_{"opacity", 1.0, 0.0, 1.0, "Alpha of mapped pixels (NaN pixels take nanColor's alpha)"};
+    ImageOut result_{"image",
+                     "Linear R, G, B, A (straight alpha) plus the input's Z; pixels whose Z is +inf are "
+                     "transparent black",
+                     {"R", "G", "B", "A"}};
+    ValueOut usedMinimum_{"usedMinimum", PortType::Float, "Value mapped to the start of the map (NaN if none)"};
+    ValueOut usedMaximum_{"usedMaximum", PortType::Float, "Value mapped to the end of the map (NaN if none)"};
 };
 
 }  // namespace darkroom

@@ -4,7 +4,7 @@
 
 namespace darkroom {
 
-std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs, const std::string& node) {
+std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs) {
     std::vector<ChannelDesc> out;
     std::vector<std::size_t> firstInput;  // which input introduced out[k], for the error message
     for (std::size_t i = 0; i < inputs.size(); ++i)
@@ -14,7 +14,7 @@ std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs, cons
                 if (out[k].name != c.name) continue;
                 found = true;
                 if (out[k].type != c.type)
-                    throw Error(node + ": channel '" + c.name + "' is " + toString(out[k].type) + " in input " +
+                    throw Error("channel '" + c.name + "' is " + toString(out[k].type) + " in input " +
                                 std::to_string(firstInput[k]) + " but " + toString(c.type) + " in input " +
                                 std::to_string(i) + "; every input must give a channel the same type");
             }

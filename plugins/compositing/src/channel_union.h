@@ -8,8 +8,8 @@
 
 namespace darkroom {
 
-// Throws darkroom::Error (prefixed with `node`) when one name has different
-// types in different inputs, naming the channel, both inputs and both types.
-std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs, const std::string& node);
+// Throws darkroom::Error when one name has different types in different
+// inputs, naming the channel, both inputs and both types.
+std::vector<ChannelDesc> channelUnion(const std::vector<BufferPtr>& inputs);
 
 }  // namespace darkroom

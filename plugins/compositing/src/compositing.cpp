@@ -55,50 +55,38 @@ struct ChannelSources {
 
 }  // namespace
 
-PortList Compositing::ports() const {
-    PortList p;
-    p.imagesIn("images",
-               "G-buffers to merge, any number, all the same size, each with a depth channel; edge order is "
-               "the tie-break order (lower wins)");
-    p.stringIn("depthChannel", "Z", "Float channel holding planar depth (+inf or NaN = background)");
-    p.imageOut("image",
-               "Per pixel every channel of the nearest input; the union of the inputs' channels; the first "
-               "input's camera");
-    return p;
-}
-
 void Compositing::execute(Context& ctx) {
-    const std::string node = "Compositing '" + ctx.nodeName() + "'";
-    const std::vector<BufferPtr> inputs = ctx.images("images");
-    if (inputs.empty()) throw Error(node + ": no input connected to 'images'; connect at least one G-buffer");
+    const std::vector<BufferPtr> inputs = ctx.get(images_);
+    if (inputs.empty()) throw Error("no input connected to 'images'; connect at least one G-buffer");
     for (std::size_t i = 0; i < inputs.size(); ++i)
-        if (!inputs[i]) throw Error(node + ": input " + std::to_string(i) + " on 'images' holds no image");
+        if (!inputs[i]) throw Error("input " + std::to_string(i) + " on 'images' holds no image");
     // One input has nothing to merge with: forward it untouched.
     if (inputs.size() == 1) {
-        ctx.setOutput("image", inputs[0]);
+        ctx.set(result_, inputs[0]);
         return;
     }
 
-    const std::string& depthName = ctx.getString("depthChannel");
+    const std::string& depthName = ctx.get(depthChannel_);
     const Buffer& first = *inputs[0];
     std::vector<const float*> depth(inputs.size());
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const Buffer& b = *inputs[i];
         if (b.width() != first.width() || b.height() != first.height())
-            throw Error(node + ": input " + std::to_string(i) + " is " + sizeText(b) + " but input 0 is " +
+            throw Error("input " + std::to_string(i) + " is " + sizeText(b) + " but input 0 is " +
                         sizeText(first) + "; all inputs must have the same size (use Resize)");
         depth[i] = b.hostFloat(depthName);
         if (!depth[i])
-            throw Error(node + ": input " + std::to_string(i) + " has no float32 depth channel '" + depthName +
+            throw Error("input " + std::to_string(i) + " has no float32 depth channel '" + depthName +
                         "'; it has " + channelList(b));
         if (!sameView(b.metadata().camera, first.metadata().camera))
-            ctx.warn(node + ": input " + std::to_string(i) +
+            ctx.warn("input " + std::to_string(i) +
                      " was rendered with another camera than input 0; the output keeps input 0's camera");
     }
 
-    const std::vector<ChannelDesc> channels = channelUnion(inputs, node);
+    const std::vector<ChannelDesc> channels = channelUnion(inputs);
     const int w = first.width(), h = first.height();
-    auto out = ctx.allocate(w, h, channels);
+    // Every channel of every pixel is written below.
+    auto out = ctx.allocate(w, h, channels, Fill::None);
     out->metadata() = first.metadata();
 
     std::vector<ChannelSources> sources;
@@ -160,9 +148,8 @@ void Compositing::execute(Context& ctx) {
             }
         }
     });
-    if (ctx.cancelled()) return;
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

@@ -9,16 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <memory>
 
 namespace darkroom {
 
 namespace {
-
-bool isColour(const ChannelDesc& c) {
-    return c.type == ChannelType::Float32 && (c.name == "R" || c.name == "G" || c.name == "B" || c.name == "A");
-}
 
 // Blends pixel i with neighbour j by t. With alpha the colours are mixed
 // premultiplied (straight alpha in and out), as a filtered fetch of
@@ -53,43 +48,30 @@ struct ColourPlanes {
 
 }  // namespace
 
-PortList Fxaa::ports() const {
-    PortList p;
-    p.imageIn("image", "Linear colour R, G, B (A optional: pixels with A <= 0 are background)",
-              {"R", "G", "B"});
-    p.enumIn("preset", fxaa::presetNames(), "12",
-             "FXAA 3.11 quality preset: 10-15 medium dither (10 fastest), 20-29 less dither and "
-             "longer edge searches, 39 no dither (slowest); the last digit is the search length");
-    p.floatIn("subpix", 0.75, 0.0, 1.0,
-              "Sub-pixel aliasing removal: 0 off, 0.25 sharper, 0.75 FXAA's default, 1 softest");
-    p.floatIn("edgeThreshold", 0.166, 0.0, 1.0,
-              "Local luma contrast needed to process a pixel, relative to the brightest pixel of "
-              "its cross: 0.333 too little, 0.166 default, 0.125 high quality, 0.063 overkill");
-    p.floatIn("edgeThresholdMin", 0.0833, 0.0, 1.0,
-              "Absolute luma contrast below which dark pixels are skipped: 0.0833 default, "
-              "0.0625 high quality, 0.0312 visible limit");
-    p.imageOut("image",
-               "Anti-aliased R, G, B (and A, blended with the same weight); every other channel "
-               "passes through unchanged; NaN or transparent pixels are never mixed into others",
-               {"R", "G", "B"});
-    return p;
+std::vector<std::pair<int, std::string>> Fxaa::presetChoices() {
+    std::vector<std::pair<int, std::string>> out;
+    const auto& all = fxaa::presets();
+    for (std::size_t i = 0; i < all.size(); ++i) out.emplace_back(int(i), all[i].name);
+    return out;
+}
+
+int Fxaa::presetIndex(const std::string& name) {
+    const auto& all = fxaa::presets();
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (all[i].name == name) return int(i);
+    return -1;
 }
 
 void Fxaa::execute(Context& ctx) {
-    const BufferPtr in = ctx.requireImage("image");
-    const std::string node = "FXAA '" + ctx.nodeName() + "'";
+    const BufferPtr in = ctx.get(image_);
     fxaa::Settings s;
-    try {
-        s.preset = &fxaa::preset(ctx.getString("preset"));
-    } catch (const Error& e) {
-        throw Error(node + ": " + e.what());
-    }
-    s.subpix = float(ctx.getFloat("subpix"));
-    s.edgeThreshold = float(ctx.getFloat("edgeThreshold"));
-    s.edgeThresholdMin = float(ctx.getFloat("edgeThresholdMin"));
+    s.preset = &fxaa::presets().at(std::size_t(ctx.get(preset_)));
+    s.subpix = float(ctx.get(subpix_));
+    s.edgeThreshold = float(ctx.get(edgeThreshold_));
+    s.edgeThresholdMin = float(ctx.get(edgeThresholdMin_));
     if (!(s.subpix >= 0.0f && s.subpix <= 1.0f) || !(s.edgeThreshold >= 0.0f && s.edgeThreshold <= 1.0f) ||
         !(s.edgeThresholdMin >= 0.0f && s.edgeThresholdMin <= 1.0f))
-        throw Error(node + ": subpix, edgeThreshold and edgeThresholdMin must lie in [0, 1]");
+        throw Error("subpix, edgeThreshold and edgeThresholdMin must lie in [0, 1]");
 
     const int w = in->width(), h = in->height();
     const std::size_t rowLength = std::size_t(w);
@@ -105,11 +87,13 @@ void Fxaa::execute(Context& ctx) {
     ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
         fxaa::computeLuma(r, g, b, a, luma.get(), std::size_t(y0) * rowLength, std::size_t(y1) * rowLength);
     });
-    if (ctx.cancelled()) return;
     ctx.progress(0.3);
 
-    auto out = ctx.allocate(w, h, in->channels());
-    out->metadata() = in->metadata();
+    // Only the colour is new; every other channel is shared with the input.
+    // Pass 2 writes every pixel of it.
+    std::vector<ChannelDesc> fresh{"R", "G", "B"};
+    if (a) fresh.push_back("A");
+    auto out = ctx.derive(in, fresh, Fill::None);
     const ColourPlanes planes{r, g, b, a, out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B"),
                               a ? out->hostFloat("A") : nullptr};
     const fxaa::LumaPlane plane{luma.get(), w, h};
@@ -133,26 +117,8 @@ void Fxaa::execute(Context& ctx) {
                     planes.copy(i);
             }
     });
-    if (ctx.cancelled()) return;
-
-    // Every other channel passes through (row chunks in parallel: on large
-    // G-buffers the copies cost as much as the filter).
-    for (const auto& c : in->channels()) {
-        if (isColour(c) && (c.name != "A" || a)) continue;
-        const std::size_t bytes = 4;
-        const void* src = c.type == ChannelType::UInt32 ? static_cast<const void*>(in->hostUInt(c.name))
-                                                        : static_cast<const void*>(in->hostFloat(c.name));
-        void* dst = c.type == ChannelType::UInt32 ? static_cast<void*>(out->hostUInt(c.name))
-                                                  : static_cast<void*>(out->hostFloat(c.name));
-        ctx.parallelFor(0, h, 64, [&](int y0, int y1) {
-            const std::size_t begin = std::size_t(y0) * rowLength * bytes;
-            std::memcpy(static_cast<char*>(dst) + begin, static_cast<const char*>(src) + begin,
-                        std::size_t(y1 - y0) * rowLength * bytes);
-        });
-    }
-    if (ctx.cancelled()) return;
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

@@ -1,10 +1,9 @@
 #include "ibs.h"
 
-#include "../../normals/lib/depth_normals.h"
-#include "../../normals/lib/pass_through.h"
 #include "silhouette.h"
 
 #include <darkroom/error.h>
+#include <darkroom/view_geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,11 +22,11 @@ std::vector<float> headlight(Context& ctx, const Buffer& in, const Camera& camer
     float* view[3] = {nv[0].data(), nv[1].data(), nv[2].data()};
     const float* world[3] = {in.hostFloat("N.x"), in.hostFloat("N.y"), in.hostFloat("N.z")};
     if (world[0] && world[1] && world[2]) {
-        passes::worldToViewNormals(ctx, world, n, camera, view);  // captured normals are exact
+        worldToViewNormals(ctx, world, n, camera, view);  // captured normals are exact
     } else {
-        passes::NormalOutputs o;
+        NormalOutputs o;
         std::copy(view, view + 3, o.view);
-        passes::reconstructNormals(ctx, depth, w, h, camera, passes::NormalMethod::Extrapolated, o);
+        reconstructNormals(ctx, depth, w, h, camera, NormalMethod::Extrapolated, o);
     }
     const bool perspective = camera.projection == Camera::Projection::Perspective;
     std::vector<float> light(n);
@@ -35,11 +34,12 @@ std::vector<float> headlight(Context& ctx, const Buffer& in, const Camera& camer
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < w; ++x) {
                 const std::size_t i = std::size_t(y) * w + x;
-                Vec3 v{0, 0, 1};
+                // Unit vector to the eye in view space (z forward, so the eye is at -z).
+                Vec3 v{0, 0, -1};
                 if (perspective) {
                     double sx, sy;
                     camera.planeOffsets(x + 0.5, y + 0.5, sx, sy);
-                    v = normalize(Vec3{-sx, -sy, 1});  // eye minus view position, unit
+                    v = normalize(Vec3{-sx, -sy, -1});  // eye minus view position, unit
                 }
                 const double d = nv[0][i] * v.x + nv[1][i] * v.y + nv[2][i] * v.z;
                 // NaN normals (no surface, or NaN in captured N) stay NaN and
@@ -53,68 +53,37 @@ std::vector<float> headlight(Context& ctx, const Buffer& in, const Camera& camer
 
 }  // namespace
 
-PortList Ibs::ports() const {
-    PortList p;
-    p.imageIn("image",
-              "Depth Z (+inf background); optional objectId (uint32), R, G, B, A, N.x/N.y/N.z and "
-              "the camera (needed for lighting)",
-              {"Z"});
-    p.floatIn("width", 1.0, 0.0, 32.0,
-              "Outline width in pixels: pixels within this distance of a discontinuity (1 = only "
-              "the 4-neighbours of the jump)");
-    p.floatIn("strength", 1.0, 0.0, 1.0, "Opacity of the outline colour over the image");
-    p.colorIn("color", Color{0.0f, 0.0f, 0.0f, 1.0f}, "Linear colour of the outlines (its alpha scales strength)");
-    p.floatIn("depthThreshold", 0.05, 0.0, 1e6,
-              "Relative depth jump |Z1 - Z2| / nearer Z above which neighbours are separate surfaces");
-    p.enumIn("side", {"near", "far"}, "near",
-             "near: outline the nearer surface of each jump (background untouched, objects keep "
-             "their footprint); far: the surface or background behind it (a halo; alpha raised)");
-    p.boolIn("objectIds", true, "Also draw outlines where the uint32 channel objectId changes");
-    p.boolIn("lighting", false,
-             "Multiply R, G, B by luminance * (ambient + (1 - ambient) max(0, N.V)), a headlight "
-             "(N from N.* or reconstructed from depth)");
-    p.floatIn("luminance", 1.0, 0.0, 100.0, "Light intensity of the lighting term");
-    p.floatIn("ambient", 0.2, 0.0, 1.0, "Share of the light that does not depend on the normal");
-    p.imageOut("image",
-               "All input channels plus Silhouette in [0, 1]; R, G, B (and A) with the outlines "
-               "(and lighting) applied when the input has colour",
-               {"Silhouette"});
-    return p;
-}
-
 void Ibs::execute(Context& ctx) {
-    const BufferPtr in = ctx.requireImage("image");
-    const std::string node = "IBS '" + ctx.nodeName() + "'";
+    const BufferPtr in = ctx.get(image_);
     const float* depth = in->requireFloat("Z");
     const int w = in->width(), h = in->height();
 
     passes::SilhouetteOptions so;
-    so.width = ctx.getFloat("width");
-    so.depthThreshold = ctx.getFloat("depthThreshold");
-    so.nearSide = ctx.getString("side") != "far";
+    so.width = ctx.get(width_);
+    so.depthThreshold = ctx.get(depthThreshold_);
+    so.nearSide = ctx.get(side_) == Side::Near;
     if (!(so.width >= 0) || !(so.depthThreshold >= 0))
-        throw Error(node + ": width and depthThreshold must be non-negative numbers");
-    const std::uint32_t* ids = ctx.getBool("objectIds") ? in->hostUInt("objectId") : nullptr;
-    const double strength = std::clamp(ctx.getFloat("strength"), 0.0, 1.0);
-    const Color color = ctx.getColor("color");
-    const bool lighting = ctx.getBool("lighting");
-    const double luminance = ctx.getFloat("luminance");
-    const double ambient = std::clamp(ctx.getFloat("ambient"), 0.0, 1.0);
+        throw Error("width and depthThreshold must be non-negative numbers");
+    const std::uint32_t* ids = ctx.get(objectIds_) ? in->hostUInt("objectId") : nullptr;
+    const double strength = std::clamp(ctx.get(strength_), 0.0, 1.0);
+    const Color color = ctx.get(color_);
+    const bool lighting = ctx.get(lighting_);
+    const double luminance = ctx.get(luminance_);
+    const double ambient = std::clamp(ctx.get(ambient_), 0.0, 1.0);
 
     const float* rgbIn[3] = {in->hostFloat("R"), in->hostFloat("G"), in->hostFloat("B")};
     const bool colour = rgbIn[0] && rgbIn[1] && rgbIn[2];
     const float* alphaIn = in->hostFloat("A");
-    std::vector<std::string> added{"Silhouette"};
-    if (colour) added.insert(added.end(), {"R", "G", "B"});
-    if (colour && alphaIn) added.push_back("A");
+    std::vector<ChannelDesc> fresh{"Silhouette"};
+    if (colour) fresh.insert(fresh.end(), {"R", "G", "B"});
+    if (colour && alphaIn) fresh.push_back("A");
 
     std::vector<float> light;
-    if (colour && lighting)
-        light = headlight(ctx, *in, passes::requireCamera(*in, node + ": input 'image' (for lighting)"), ambient);
+    if (colour && lighting) light = headlight(ctx, *in, requireCamera(*in, "input 'image' (for lighting)"), ambient);
     const std::vector<float> s = passes::silhouette(ctx, depth, ids, w, h, so);
-    if (ctx.cancelled()) return;
 
-    auto out = passes::allocatePassThrough(ctx, *in, added);
+    // Every fresh plane is written below.
+    auto out = ctx.derive(in, fresh, Fill::None);
     std::copy(s.begin(), s.end(), out->requireFloat("Silhouette"));
     if (colour) {
         float* rgb[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
@@ -137,7 +106,7 @@ void Ibs::execute(Context& ctx) {
         });
     }
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

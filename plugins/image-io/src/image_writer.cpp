@@ -26,26 +26,10 @@ std::vector<std::string> splitChannels(const std::string& text) {
 
 }  // namespace
 
-PortList ImageWriter::ports() const {
-    PortList p;
-    p.imageIn("image", "Image to write");
-    p.pathIn("path", "",
-             "Output file; the extension picks the format (.exr keeps every channel exactly; "
-             ".png, .jpg, .tif are 8-bit sRGB). Relative to --output or the pipeline file");
-    p.enumIn("compression", {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"},
-             "zip", "EXR compression (pxr24, b44, b44a, dwaa, dwab are lossy); ignored by 8-bit formats");
-    p.boolIn("half", false, "EXR: store float channels except depth Z as 16-bit half (lossy)");
-    p.stringIn("channels", "",
-               "Channels to write, comma separated. 8-bit: 1 (grey), 2 (grey, alpha), 3 (RGB) or 4 "
-               "(RGBA); empty = R, G, B(, A), else Y(, A), else the one float channel. EXR: a subset; "
-               "empty = all");
-    return p;
-}
-
 void ImageWriter::execute(Context& ctx) {
-    const BufferPtr image = ctx.requireImage("image");
-    const std::string& given = ctx.getString("path");
-    if (given.empty()) throw Error("ImageWriter: no file given; set 'path' to the output file");
+    const BufferPtr image = ctx.get(image_);
+    const std::string& given = ctx.getString(path_.name());
+    if (given.empty()) throw Error("no file given; set 'path' to the output file");
     const std::string path = ctx.resolveOutputPath(given);
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) {
@@ -54,9 +38,9 @@ void ImageWriter::execute(Context& ctx) {
         if (ec) throw Error("cannot create the folder '" + parent.string() + "' for '" + path + "': " + ec.message());
     }
     ImageWriteOptions options;
-    options.compression = ctx.getString("compression");
-    options.halfFloat = ctx.getBool("half");
-    options.channels = splitChannels(ctx.getString("channels"));
+    options.compression = ctx.get(compression_);
+    options.halfFloat = ctx.get(half_);
+    options.channels = splitChannels(ctx.get(channels_));
     writeImage(*image, path, options);
     ctx.progress(1.0);
 }

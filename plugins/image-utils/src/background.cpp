@@ -9,45 +9,22 @@
 
 namespace darkroom {
 
-PortList Background::ports() const {
-    PortList p;
-    p.imageIn("image",
-              "Linear R, G, B with straight alpha A; without A, finite depth Z counts as opaque and +inf as "
-              "empty",
-              {"R", "G", "B"});
-    p.enumIn("mode", {"color", "gradient"}, "gradient", "color: one colour; gradient: 'top' at the first row to "
-             "'bottom' at the last, linear in between");
-    p.colorIn("color", Color{0.32f, 0.34f, 0.43f, 1.0f}, "Background colour (mode color)");
-    p.colorIn("top", Color{0.0f, 0.0f, 0.16f, 1.0f}, "Colour of the top row (mode gradient)");
-    p.colorIn("bottom", Color{0.32f, 0.34f, 0.43f, 1.0f}, "Colour of the bottom row (mode gradient)");
-    p.imageOut("image",
-               "The image over the background: R, G, B and A (1 where the background is opaque); other channels, "
-               "Z included, pass through",
-               {"R", "G", "B", "A"});
-    return p;
-}
-
 void Background::execute(Context& ctx) {
-    const std::string node = "Background '" + ctx.nodeName() + "'";
-    const BufferPtr in = ctx.requireImage("image");
+    const BufferPtr in = ctx.get(image_);
     const float* c[3];
     const char* names[3] = {"R", "G", "B"};
-    for (int k = 0; k < 3; ++k) c[k] = utils::requireFloatChannel(*in, names[k], node, "image");
+    for (int k = 0; k < 3; ++k) c[k] = utils::requireFloatChannel(*in, names[k], "image");
     const float* alpha = in->hostFloat("A");
     const float* depth = in->hostFloat("Z");
     if (!alpha && !depth)
-        throw Error(node + ": the image has neither alpha A nor depth Z to tell scene from background; it has " +
+        throw Error("the image has neither alpha A nor depth Z to tell scene from background; it has " +
                     utils::channelList(*in));
-    const bool gradient = ctx.getString("mode") == "gradient";
-    const Color top = gradient ? ctx.getColor("top") : ctx.getColor("color");
-    const Color bottom = gradient ? ctx.getColor("bottom") : top;
+    const bool gradient = ctx.get(mode_) == Mode::Gradient;
+    const Color top = gradient ? ctx.get(top_) : ctx.get(color_);
+    const Color bottom = gradient ? ctx.get(bottom_) : top;
 
-    std::vector<ChannelDesc> channels = in->channels();
-    if (!alpha) channels.push_back({"A"});
-    auto out = ctx.allocate(in->width(), in->height(), channels);
-    out->metadata() = in->metadata();
-    for (const auto& ch : in->channels())
-        if (ch.name != "R" && ch.name != "G" && ch.name != "B" && ch.name != "A") utils::copyChannel(*in, *out, ch);
+    // New colour and alpha, every pixel written; the rest is shared.
+    auto out = ctx.derive(in, {"R", "G", "B", "A"}, Fill::None);
     float* o[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
     float* oa = out->hostFloat("A");
     const int w = in->width(), h = in->height();
@@ -80,9 +57,8 @@ void Background::execute(Context& ctx) {
             }
         }
     });
-    if (ctx.cancelled()) return;
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

@@ -21,7 +21,7 @@ struct Pick {
 };
 
 // "R, G, value:Z" -> {R->R, G->G, value->Z}.
-std::vector<Pick> parsePicks(const std::string& text, const std::string& node) {
+std::vector<Pick> parsePicks(const std::string& text) {
     std::vector<Pick> picks;
     std::size_t start = 0;
     while (start <= text.size()) {
@@ -33,37 +33,25 @@ std::vector<Pick> parsePicks(const std::string& text, const std::string& node) {
         Pick p{trim(item.substr(0, colon)), colon == std::string::npos ? "" : trim(item.substr(colon + 1))};
         if (colon == std::string::npos) p.to = p.from;
         if (p.from.empty() || p.to.empty())
-            throw Error(node + ": '" + item + "' in 'channels' is not NAME or SOURCE:NEWNAME");
+            throw Error("'" + item + "' in 'channels' is not NAME or SOURCE:NEWNAME");
         picks.push_back(p);
     }
-    if (picks.empty()) throw Error(node + ": 'channels' lists no channel; write e.g. \"R, G, B, A\" or \"value:R\"");
+    if (picks.empty()) throw Error("'channels' lists no channel; write e.g. \"R, G, B, A\" or \"value:R\"");
     return picks;
 }
 
 }  // namespace
 
-PortList ChannelSelect::ports() const {
-    PortList p;
-    p.imageIn("image", "Any image");
-    p.stringIn("channels", "R, G, B, A",
-               "Comma-separated channel names; in keep mode SOURCE:NEWNAME renames (e.g. \"value:R\")");
-    p.enumIn("mode", {"keep", "drop"}, "keep",
-             "keep: output only the listed channels, in the listed order; drop: output all others, in their order");
-    p.imageOut("image", "The selected channels with the input's metadata (camera)");
-    return p;
-}
-
 void ChannelSelect::execute(Context& ctx) {
-    const std::string node = "ChannelSelect '" + ctx.nodeName() + "'";
-    const BufferPtr in = ctx.requireImage("image");
-    const std::vector<Pick> picks = parsePicks(ctx.getString("channels"), node);
-    const bool keep = ctx.getString("mode") == "keep";
+    const BufferPtr in = ctx.get(image_);
+    const std::vector<Pick> picks = parsePicks(ctx.get(channels_));
+    const bool keep = ctx.get(mode_) == Mode::Keep;
 
     for (const Pick& p : picks) {
         if (!in->hasChannel(p.from))
-            throw Error(node + ": the image has no channel '" + p.from + "'; it has " + utils::channelList(*in));
+            throw Error("the image has no channel '" + p.from + "'; it has " + utils::channelList(*in));
         if (!keep && p.to != p.from)
-            throw Error(node + ": drop mode cannot rename ('" + p.from + ":" + p.to + "'); list plain names");
+            throw Error("drop mode cannot rename ('" + p.from + ":" + p.to + "'); list plain names");
     }
 
     std::vector<Pick> chosen;
@@ -77,21 +65,16 @@ void ChannelSelect::execute(Context& ctx) {
     std::vector<ChannelDesc> channels;
     for (const Pick& p : chosen) {
         for (const auto& c : channels)
-            if (c.name == p.to) throw Error(node + ": channel '" + p.to + "' would appear twice in the output");
+            if (c.name == p.to) throw Error("channel '" + p.to + "' would appear twice in the output");
         channels.push_back({p.to, *in->channelType(p.from)});
     }
 
-    auto out = ctx.allocate(in->width(), in->height(), channels);
+    // The chosen planes are shared, under their new names; nothing is copied.
+    auto out = ctx.allocate(in->width(), in->height(), {});
     out->metadata() = in->metadata();
-    const std::size_t n = in->pixelCount();
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
-        if (channels[k].type == ChannelType::Float32)
-            std::copy_n(in->hostFloat(chosen[k].from), n, out->hostFloat(channels[k].name));
-        else
-            std::copy_n(in->hostUInt(chosen[k].from), n, out->hostUInt(channels[k].name));
-    }
+    for (std::size_t k = 0; k < chosen.size(); ++k) out->setPlane(channels[k], in->plane(chosen[k].from));
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

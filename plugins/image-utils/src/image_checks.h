@@ -10,14 +10,10 @@ namespace darkroom::utils {
 std::string channelList(const Buffer& b);
 // "640x480".
 std::string sizeText(const Buffer& b);
-// The float32 channel `name`, or a darkroom::Error naming the node, the port
-// and the channels the image has.
-const float* requireFloatChannel(const Buffer& b, const std::string& name, const std::string& node,
-                                 const std::string& port);
+// The float32 channel `name`, or a darkroom::Error naming the port and the
+// channels the image has (the host adds the node).
+const float* requireFloatChannel(const Buffer& b, const std::string& name, const std::string& port);
 // Throws unless both images have the same size, naming both sizes.
-void requireSameSize(const Buffer& a, const Buffer& b, const std::string& node, const std::string& portA,
-                     const std::string& portB);
-// Copies every channel of `from` into the same-named channel of `to`, which must have them.
-void copyChannel(const Buffer& from, WritableBuffer& to, const ChannelDesc& channel);
+void requireSameSize(const Buffer& a, const Buffer& b, const std::string& portA, const std::string& portB);
 
 }  // namespace darkroom::utils

@@ -15,10 +15,10 @@ struct Rgba {
     const float* a = nullptr;  // nullptr: opaque
 };
 
-Rgba colourOf(const Buffer& b, const std::string& node, const std::string& port) {
+Rgba colourOf(const Buffer& b, const std::string& port) {
     Rgba r;
     const char* names[3] = {"R", "G", "B"};
-    for (int k = 0; k < 3; ++k) r.c[k] = utils::requireFloatChannel(b, names[k], node, port);
+    for (int k = 0; k < 3; ++k) r.c[k] = utils::requireFloatChannel(b, names[k], port);
     r.a = b.hostFloat("A");
     return r;
 }
@@ -30,52 +30,34 @@ bool finiteColour(const Rgba& c, std::size_t i) {
 
 }  // namespace
 
-PortList Mix::ports() const {
-    PortList p;
-    p.imageIn("image", "Base colour: linear R, G, B and optionally straight alpha A; every channel passes through",
-              {"R", "G", "B"});
-    p.optionalImageIn("other",
-                      "multiply: the image holding factorChannel (unconnected: taken from 'image'); blend, over, "
-                      "add: the second colour R, G, B (and A); same size as 'image'");
-    p.enumIn("mode", {"multiply", "blend", "over", "add"}, "multiply",
-             "multiply: RGB *= mix(1, factor, amount); blend: mix(image, other, amount) on R, G, B, A; over: "
-             "'other' composited over 'image' with other's alpha times amount; add: RGB += amount * other");
-    p.stringIn("factorChannel", "AO", "multiply: the float channel holding the factor, e.g. AO (SSAO) or SSDD");
-    p.floatIn("amount", 1.0, 0.0, 1.0, "Strength: 0 leaves 'image' unchanged, 1 applies fully");
-    p.imageOut("image", "'image' with new R, G, B (and A for blend and over); all other channels passed through");
-    return p;
-}
-
 void Mix::execute(Context& ctx) {
-    const std::string node = "Mix '" + ctx.nodeName() + "'";
-    const BufferPtr in = ctx.requireImage("image");
-    const BufferPtr other = ctx.image("other");
-    const std::string& mode = ctx.getString("mode");
-    const float amount = float(ctx.getFloat("amount"));
-    if (other) utils::requireSameSize(*in, *other, node, "image", "other");
-    const Rgba base = colourOf(*in, node, "image");
+    const BufferPtr in = ctx.get(image_);
+    const BufferPtr other = ctx.get(other_);
+    const Mode mode = ctx.get(mode_);
+    const float amount = float(ctx.get(amount_));
+    if (other) utils::requireSameSize(*in, *other, "image", "other");
+    const Rgba base = colourOf(*in, "image");
     const float* depth = in->hostFloat("Z");
 
     const float* factor = nullptr;
     Rgba second;
-    if (mode == "multiply") {
-        const std::string& name = ctx.getString("factorChannel");
-        factor = utils::requireFloatChannel(other ? *other : *in, name, node, other ? "other" : "image");
+    if (mode == Mode::Multiply) {
+        factor = utils::requireFloatChannel(other ? *other : *in, ctx.get(factorChannel_), other ? "other" : "image");
     } else {
-        if (!other) throw Error(node + ": mode '" + mode + "' needs an image on 'other'");
-        second = colourOf(*other, node, "other");
+        if (!other) throw Error("mode '" + ctx.getString(mode_.name()) + "' needs an image on 'other'");
+        second = colourOf(*other, "other");
     }
 
-    auto out = ctx.allocate(in->width(), in->height(), in->channels());
-    out->metadata() = in->metadata();
-    for (const auto& c : in->channels())
-        if (c.name != "R" && c.name != "G" && c.name != "B" && c.name != "A") utils::copyChannel(*in, *out, c);
+    // New colour (and alpha when the input has it), every pixel written; the
+    // rest is shared.
+    std::vector<ChannelDesc> fresh{"R", "G", "B"};
+    if (base.a) fresh.push_back("A");
+    auto out = ctx.derive(in, fresh, Fill::None);
     float* o[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
     float* oa = out->hostFloat("A");
     const int w = in->width();
     const float keep = 1.0f - amount;
-    // Decided once, not per pixel.
-    const bool multiply = mode == "multiply", blend = mode == "blend", add = mode == "add";
+    const bool multiply = mode == Mode::Multiply, blend = mode == Mode::Blend, add = mode == Mode::Add;
 
     ctx.parallelFor(0, in->height(), 8, [&](int y0, int y1) {
         for (std::size_t i = std::size_t(y0) * std::size_t(w); i < std::size_t(y1) * std::size_t(w); ++i) {
@@ -118,9 +100,8 @@ void Mix::execute(Context& ctx) {
             if (oa) oa[i] = a;
         }
     });
-    if (ctx.cancelled()) return;
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

@@ -14,40 +14,17 @@ namespace darkroom {
 
 namespace {
 
-constexpr std::int64_t kMaxSide = 65536;
-// 2^28 pixels: 1 GiB per float channel, already more than any preview or
-// supersampled reference needs; beyond it a typo would exhaust memory.
-constexpr std::int64_t kMaxPixels = std::int64_t(1) << 28;
-
 // Rounded, at least 1, and capped so the size check below sees it instead of an int overflow.
 int derived(double size) { return int(std::clamp(std::round(size), 1.0, 1e9)); }
 
 }  // namespace
 
-PortList Resize::ports() const {
-    PortList p;
-    p.imageIn("image", "Any image; depth is read from Z when present");
-    p.intIn("width", 0, 0, kMaxSide, "Output width in pixels; 0 = from height keeping the aspect, or from scale");
-    p.intIn("height", 0, 0, kMaxSide, "Output height in pixels; 0 = from width keeping the aspect, or from scale");
-    p.floatIn("scale", 1.0, 0.001, 64.0, "Size factor used when width and height are both 0");
-    p.enumIn("filter", {"box", "bilinear", "nearest"}, "box",
-             "box: area average of the footprint (exact block means for integer factors, the choice for "
-             "supersampled references); bilinear: the two nearest pixels per axis; nearest: the pixel containing "
-             "the output centre");
-    p.imageOut("image",
-               "Resampled image, camera resolution updated. Float channels are filtered (R, G, B weighted by "
-               "alpha; NaN samples skipped); Z and uint32 channels come from one source pixel: the nearest "
-               "depth in the footprint (box) or the nearest pixel (bilinear, nearest)");
-    return p;
-}
-
 void Resize::execute(Context& ctx) {
-    const std::string node = "Resize '" + ctx.nodeName() + "'";
-    const BufferPtr in = ctx.requireImage("image");
+    const BufferPtr in = ctx.get(image_);
     const int w = in->width(), h = in->height();
-    if (w <= 0 || h <= 0) throw Error(node + ": the input image is empty (" + utils::sizeText(*in) + ")");
-    const std::int64_t askW = ctx.getInt("width"), askH = ctx.getInt("height");
-    const double scale = ctx.getFloat("scale");
+    if (w <= 0 || h <= 0) throw Error("the input image is empty (" + utils::sizeText(*in) + ")");
+    const std::int64_t askW = ctx.get(width_), askH = ctx.get(height_);
+    const double scale = ctx.get(scale_);
     int outW, outH;
     if (askW > 0 && askH > 0) {
         outW = int(askW);
@@ -63,26 +40,24 @@ void Resize::execute(Context& ctx) {
         outH = derived(h * scale);
     }
     if (outW > kMaxSide || outH > kMaxSide || std::int64_t(outW) * outH > kMaxPixels)
-        throw Error(node + ": output " + std::to_string(outW) + "x" + std::to_string(outH) + " exceeds " +
+        throw Error("output " + std::to_string(outW) + "x" + std::to_string(outH) + " exceeds " +
                     std::to_string(kMaxSide) + " pixels per side or " + std::to_string(kMaxPixels) +
                     " pixels in all");
     if (outW == w && outH == h) {
-        ctx.setOutput("image", in);  // nothing to resample
+        ctx.set(result_, in);  // nothing to resample
         return;
     }
     if (std::abs(double(outW) / outH - double(w) / h) > 0.01 * double(w) / h)
-        ctx.warn(node + ": " + utils::sizeText(*in) + " to " + std::to_string(outW) + "x" + std::to_string(outH) +
+        ctx.warn(utils::sizeText(*in) + " to " + std::to_string(outW) + "x" + std::to_string(outH) +
                  " changes the aspect ratio; the camera's horizontal field of view no longer matches the pixels");
 
-    const std::string& f = ctx.getString("filter");
-    const utils::ResampleFilter filter = f == "bilinear" ? utils::ResampleFilter::Bilinear
-                                         : f == "nearest" ? utils::ResampleFilter::Nearest
-                                                          : utils::ResampleFilter::Box;
+    const utils::ResampleFilter filter = ctx.get(filter_);
     const utils::AxisTaps tx = utils::axisTaps(w, outW, filter), ty = utils::axisTaps(h, outH, filter);
     const float* depth = in->hostFloat("Z");
     const float* alpha = in->hostFloat("A");
 
-    auto out = ctx.allocate(outW, outH, in->channels());
+    // Every channel is resampled into every output pixel.
+    auto out = ctx.allocate(outW, outH, in->channels(), Fill::None);
     out->metadata() = in->metadata();
     if (out->metadata().camera) {
         out->metadata().camera->width = outW;
@@ -116,7 +91,7 @@ void Resize::execute(Context& ctx) {
     });
 
     for (const ChannelDesc& c : in->channels()) {
-        if (ctx.cancelled()) return;
+        if (ctx.cancelled()) throw Cancelled();
         if (c.type == ChannelType::UInt32 || c.name == "Z") {
             if (c.type == ChannelType::UInt32) {
                 const std::uint32_t* s = in->hostUInt(c.name);
@@ -159,9 +134,8 @@ void Resize::execute(Context& ctx) {
                 }
         });
     }
-    if (ctx.cancelled()) return;
     ctx.progress(1.0);
-    ctx.setOutput("image", BufferPtr(std::move(out)));
+    ctx.set(result_, out);
 }
 
 }  // namespace darkroom

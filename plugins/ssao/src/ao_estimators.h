@@ -1,7 +1,7 @@
 #pragma once
 // The two occlusion estimators. Both write raw AO in [0, 1] (1 = unoccluded)
 // for every pixel; pixels without valid depth get 1.
-#include "view_geometry.h"
+#include "pixel_geometry.h"
 
 #include <darkroom/context.h>
 
@@ -24,8 +24,8 @@ struct AoSettings {
     Geometry geometry = Geometry::Surface;
 
     // Occlusion radius in world units at planar depth z.
-    float worldRadius(const ViewGeometry& g, float z) const {
-        return radiusInImageHeight ? radius * float(g.height) * g.pixelSizeAt(z) : radius;
+    float worldRadius(const PixelGeometry& g, float z) const {
+        return radiusInImageHeight ? radius * float(g.height()) * g.pixelSizeAt(z) : radius;
     }
 };
 
@@ -45,7 +45,7 @@ inline bool pointsOccluderAllowed(float occluderZ, float receiverZ, float thickn
     return occluderZ < receiverZ && receiverZ - occluderZ <= thickness;
 }
 
-void hemisphereAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* ao);
-void horizonAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* ao);
+void hemisphereAO(const PixelGeometry& g, const AoSettings& s, Context& ctx, float* ao);
+void horizonAO(const PixelGeometry& g, const AoSettings& s, Context& ctx, float* ao);
 
 }  // namespace darkroom::ssao

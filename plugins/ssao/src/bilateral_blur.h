@@ -2,7 +2,7 @@
 // Depth-aware (bilateral) blur that removes the per-pixel noise pattern of the
 // estimators without bleeding occlusion across depth edges.
 #include "ao_estimators.h"
-#include "view_geometry.h"
+#include "pixel_geometry.h"
 
 #include <darkroom/context.h>
 
@@ -13,6 +13,6 @@ namespace darkroom::ssao {
 // distance from the centre pixel's tangent plane (sigma = 10 % of the
 // occlusion radius), so only neighbours on the same surface mix. Pixels
 // without valid depth are neither read nor changed.
-void bilateralBlur(const ViewGeometry& g, const AoSettings& s, int radius, Context& ctx, float* ao);
+void bilateralBlur(const PixelGeometry& g, const AoSettings& s, int radius, Context& ctx, float* ao);
 
 }  // namespace darkroom::ssao

@@ -27,28 +27,28 @@ float innerIntegral(float h, float g) {
 
 }  // namespace
 
-void horizonAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* ao) {
+void horizonAO(const PixelGeometry& g, const AoSettings& s, Context& ctx, float* ao) {
     const bool points = s.geometry == Geometry::Points;
-    ctx.parallelFor(0, g.height, 4, [&](int y0, int y1) {
+    ctx.parallelFor(0, g.height(), 4, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < g.width; ++x) {
+            for (int x = 0; x < g.width(); ++x) {
                 const std::size_t i = g.index(x, y);
                 ao[i] = 1.0f;
                 if (!g.valid[i]) continue;
-                const V3 p = g.position[i];
-                const V3 nrm = g.normal[i];
-                const V3 v = g.toCamera(p);
+                const V3f p = g.points[i];
+                const V3f nrm = g.normal[i];
+                const V3f v = g.toCamera(p);
                 const float R = s.worldRadius(g, p.z);
                 const float radiusPixels = R / g.pixelSizeAt(p.z);
                 if (!(radiusPixels >= 1.0f)) continue;  // nothing resolvable within a pixel
-                const V3 origin = p + nrm * (s.bias * R);
+                const V3f origin = p + nrm * (s.bias * R);
                 const float thick = s.thickness * R;
                 const float sliceNoise = pixelNoise(x, y, s.seed, 0);
                 const float stepNoise = pixelNoise(x, y, s.seed, 1);
                 const float cx = float(x) + 0.5f, cy = float(y) + 0.5f;
                 // Basis of the plane perpendicular to V.
-                const V3 e1 = normalize(V3{1, 0, 0} - v * v.x);
-                const V3 e2 = cross(v, e1);
+                const V3f e1 = normalize(V3f{1, 0, 0} - v * v.x);
+                const V3f e2 = cross(v, e1);
                 float visibility = 0;
                 for (int k = 0; k < s.slices; ++k) {
                     const float phi = (float(k) + sliceNoise) * kPi / float(s.slices);
@@ -56,11 +56,11 @@ void horizonAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* 
                     // integral's measure), not around the screen axis: for
                     // off-centre pixels of a perspective camera the two
                     // differ, and uniform screen angles bias AO by a few %.
-                    const V3 orthoDir = e1 * std::cos(phi) + e2 * std::sin(phi);
+                    const V3f orthoDir = e1 * std::cos(phi) + e2 * std::sin(phi);
                     // The slice plane holds the camera ray, so it projects to a
                     // screen line through the pixel, along d(X/Z, Y/Z).
                     float c = orthoDir.x, sn = orthoDir.y;
-                    if (g.perspective) {
+                    if (g.perspective()) {
                         c -= orthoDir.z * p.x / p.z;
                         sn -= orthoDir.z * p.y / p.z;
                     }
@@ -68,8 +68,8 @@ void horizonAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* 
                     if (!(screenLen > 1e-6f)) continue;
                     c /= screenLen;
                     sn /= screenLen;
-                    const V3 axis = normalize(cross(orthoDir, v));
-                    const V3 projN = nrm - axis * dot(nrm, axis);
+                    const V3f axis = normalize(cross(orthoDir, v));
+                    const V3f projN = nrm - axis * dot(nrm, axis);
                     const float projLen = length(projN);
                     if (!(projLen > 1e-6f)) continue;
                     const float cosG = std::clamp(dot(projN, v) / projLen, -1.0f, 1.0f);
@@ -83,13 +83,13 @@ void horizonAO(const ViewGeometry& g, const AoSettings& s, Context& ctx, float* 
                         for (int j = 0; j < s.steps; ++j) {
                             const float dist = std::max(1.0f, (float(j) + stepNoise) / float(s.steps) * radiusPixels);
                             const float sx = cx + sign * c * dist, sy = cy - sign * sn * dist;
-                            if (!(sx >= 0 && sy >= 0 && sx < float(g.width) && sy < float(g.height))) break;
-                            V3 sp;
+                            if (!(sx >= 0 && sy >= 0 && sx < float(g.width()) && sy < float(g.height()))) break;
+                            V3f sp;
                             if (!g.surfaceAt(sx, sy, sp)) continue;  // background never occludes
                             if (points && !pointsOccluderAllowed(sp.z, p.z, thick)) continue;
                             // Measured within the slice (a no-op for interpolated
                             // samples, which lie on it; nearest-pixel ones may not).
-                            V3 d = sp - origin;
+                            V3f d = sp - origin;
                             d = d - axis * dot(d, axis);
                             const float len = length(d);
                             if (!(len > 0)) continue;

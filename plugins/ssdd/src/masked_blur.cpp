@@ -1,6 +1,6 @@
 #include "masked_blur.h"
 
-#include "../../normals/lib/pass_through.h"
+#include <darkroom/view_geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +32,7 @@ std::vector<float> maskedGaussianDepth(Context& ctx, const float* depth, int w, 
     // scenes far from the camera.
     float reference = std::numeric_limits<float>::infinity();
     for (std::size_t i = 0; i < n; ++i)
-        if (isSurface(depth[i])) reference = std::min(reference, depth[i]);
+        if (darkroom::isSurface(depth[i])) reference = std::min(reference, depth[i]);
     std::vector<float> out(n, std::numeric_limits<float>::quiet_NaN());
     if (!std::isfinite(reference)) return out;
 
@@ -46,7 +46,7 @@ std::vector<float> maskedGaussianDepth(Context& ctx, const float* depth, int w, 
         for (int y = y0; y < y1; ++y) {
             const float* row = depth + std::size_t(y) * w;
             for (int x = 0; x < w; ++x) {
-                const bool s = isSurface(row[x]);
+                const bool s = darkroom::isSurface(row[x]);
                 md[std::size_t(x)] = s ? row[x] - reference : 0.0f;
                 mm[std::size_t(x)] = s ? 1.0f : 0.0f;
             }
@@ -77,7 +77,7 @@ std::vector<float> maskedGaussianDepth(Context& ctx, const float* depth, int w, 
             float* o = out.data() + std::size_t(y) * w;
             for (int x = 0; x < w; ++x)
                 // A surface pixel weighs itself with 1, so am >= 1 there.
-                if (isSurface(row[x])) o[x] = ad[std::size_t(x)] / am[std::size_t(x)] + reference;
+                if (darkroom::isSurface(row[x])) o[x] = ad[std::size_t(x)] / am[std::size_t(x)] + reference;
         }
     });
     return out;

@@ -36,7 +36,7 @@ float LensModel::signedRadius(float z) const {
 
 LensModel makeLens(const Camera& camera, int imageHeight, double aperture, double focalDistance,
                    double maxBlur) {
-    if (imageHeight <= 0) throw Error("SSDoF: the image has no rows");
+    if (imageHeight <= 0) throw Error("the image has no rows");
     LensModel lens;
     lens.aperture = aperture;
     lens.focalDistance = focalDistance;
@@ -45,7 +45,7 @@ LensModel makeLens(const Camera& camera, int imageHeight, double aperture, doubl
     // pixelSizeAt(1) uses the camera's own height; the buffer's is authoritative.
     lens.pixelPerDepth = 2.0 * camera.halfHeight() / double(imageHeight);
     if (!(lens.pixelPerDepth > 0.0) || !std::isfinite(lens.pixelPerDepth))
-        throw Error("SSDoF: the camera's field of view (or view height) must be positive and finite");
+        throw Error("the camera's field of view (or view height) must be positive and finite");
     return lens;
 }
 

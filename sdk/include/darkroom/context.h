@@ -1,6 +1,7 @@
 #pragma once
 #include <darkroom/buffer.h>
 #include <darkroom/export.h>
+#include <darkroom/port.h>
 #include <darkroom/value.h>
 
 #include <functional>
@@ -12,6 +13,10 @@
 namespace darkroom {
 
 class CaptureBackend;
+
+// What a new plane holds before the filter writes it. A pass that writes every
+// pixel asks for None and saves a pass over memory; Zero is the safe default.
+enum class Fill : std::uint8_t { Zero, None };
 
 // What a filter sees while it executes: its inputs, a way to allocate and
 // publish outputs, progress, cancellation and parallel loops. Implemented by
@@ -44,11 +49,50 @@ public:
     virtual std::string resolveInputPath(std::string_view path) const = 0;
     virtual std::string resolveOutputPath(std::string_view path) const = 0;
 
+    // The result of a filter depends on this file (beyond its path inputs,
+    // which the host watches already): the host re-runs the node when the
+    // file's modification time or size changes. E.g. a database reader names
+    // its data.csv and the product it read.
+    virtual void readsFile(const std::string& path) = 0;
+
     // --- outputs ---
-    virtual std::shared_ptr<WritableBuffer> allocate(int width, int height,
-                                                     std::vector<ChannelDesc> channels) = 0;
+    // A new buffer of fresh planes from the host's pool.
+    virtual std::shared_ptr<WritableBuffer> allocate(int width, int height, std::vector<ChannelDesc> channels,
+                                                     Fill fill = Fill::Zero) = 0;
+    // The usual way to produce an image from an image: a buffer like `in` —
+    // its size, metadata and every channel shared with it, copying nothing —
+    // except the `fresh` channels, which get new writable planes (a name `in`
+    // has is replaced in place, a new name is appended), and the `drop`
+    // channels, which are left out. A pass that adds AO writes
+    //   auto out = ctx.derive(in, {"AO"}, Fill::None);
+    // and fills out->requireFloat("AO"). The host knows which planes were
+    // passed on, so when only those change upstream it re-assembles the
+    // output from the new inputs without running the pass again.
+    virtual std::shared_ptr<WritableBuffer> derive(const BufferPtr& in, std::vector<ChannelDesc> fresh,
+                                                   Fill fill = Fill::Zero, std::vector<std::string> drop = {}) = 0;
     virtual void setOutput(std::string_view port, Value value) = 0;
     void setOutput(std::string_view port, BufferPtr buffer) { setOutput(port, Value(std::move(buffer))); }
+
+    // --- typed access through port handles (port.h) ---
+    BufferPtr get(const ImageIn& p) const { return requireImage(p.name()); }
+    BufferPtr get(const OptionalImageIn& p) const { return image(p.name()); }
+    std::vector<BufferPtr> get(const ImagesIn& p) const { return images(p.name()); }
+    double get(const FloatIn& p) const { return getFloat(p.name()); }
+    std::int64_t get(const IntIn& p) const { return getInt(p.name()); }
+    bool get(const BoolIn& p) const { return getBool(p.name()); }
+    Color get(const ColorIn& p) const { return getColor(p.name()); }
+    Vec3 get(const Vec3In& p) const { return getVec3(p.name()); }
+    const std::string& get(const StringIn& p) const { return getString(p.name()); }
+    // A preset name as is; a file path resolved against the pipeline's folder.
+    std::string get(const ColorMapIn& p) const;
+    // Resolved against the pipeline's folder; empty stays empty.
+    std::string get(const PathIn& p) const;
+    template <class E>
+    E get(const EnumIn<E>& p) const {
+        return p.parse(getString(p.name()));
+    }
+    void set(const ImageOut& p, BufferPtr b) { setOutput(p.name(), Value(std::move(b))); }
+    void set(const ValueOut& p, Value v) { setOutput(p.name(), std::move(v)); }
 
     // A capture backend registered under `type` (e.g. "embree"), for nodes that
     // render; throws darkroom::Error listing the registered backends if unknown.

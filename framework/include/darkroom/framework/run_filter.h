@@ -11,7 +11,9 @@ namespace darkroom {
 
 // Runs one filter outside any graph: inputs by port name (several values for a
 // `multiple` port), unset value ports take their defaults. Used by tests,
-// benchmarks and by nodes that drive other filters. Throws darkroom::Error.
+// benchmarks and by nodes that drive other filters. It goes through the same
+// node runner as the evaluator (checks, error boundary, output sealing).
+// Throws darkroom::Error naming the node.
 struct FilterRunResult {
     std::map<std::string, Value> outputs;
     std::vector<std::string> warnings;
@@ -24,6 +26,13 @@ struct FilterRunOptions {
     std::string inputBase;
     std::string outputDir;
     const Registry* registry = nullptr;  // for Context::createBackend
+    // How errors name the node: "node 'runFilter' (Type): ...".
+    std::string nodeName = "runFilter";
+    std::string nodeType;
+    // Planes asked for with Fill::None are filled with a NaN pattern no
+    // computation makes (PlanePool::kPoison), so tests catch unwritten pixels.
+    // Benchmarks turn it off.
+    bool poison = true;
 };
 
 // A context with no inputs, for driving a CaptureBackend (or a filter by hand)

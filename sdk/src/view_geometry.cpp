@@ -1,25 +1,34 @@
-#include "depth_normals.h"
-
-#include "pass_through.h"
-
 #include <darkroom/error.h>
+#include <darkroom/view_geometry.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace darkroom::passes {
+namespace darkroom {
+
+Camera requireCamera(const Buffer& in, const std::string& what) {
+    if (!in.metadata().camera)
+        throw Error(what + " carries no camera in its metadata; depth-based passes need the camera "
+                           "that produced the depth (capture with Darkroom, read an EXR that has one, or "
+                           "set one with a Camera node)");
+    Camera c = *in.metadata().camera;
+    c.width = in.width();
+    c.height = in.height();
+    return c;
+}
 
 namespace {
 
-// Precomputed per-column and per-row image-plane offsets, so the inner loop
-// does no trigonometry or basis orthonormalisation.
-struct ViewGeometry {
+// Per-column and per-row image-plane offsets in double precision, so the
+// inner loop does no trigonometry or basis orthonormalisation.
+struct PlaneOffsets {
     Vec3 right, up, forward;
     bool perspective = true;
     std::vector<double> sx, sy;
     double pixelSize = 0;  // orthographic pixel size (world units)
 
-    ViewGeometry(const Camera& c, int w, int h) : sx(std::size_t(w)), sy(std::size_t(h)) {
+    PlaneOffsets(const Camera& c, int w, int h) : sx(std::size_t(w)), sy(std::size_t(h)) {
         c.basis(right, up, forward);
         perspective = c.projection == Camera::Projection::Perspective;
         double dummy;
@@ -28,24 +37,24 @@ struct ViewGeometry {
         pixelSize = c.pixelSizeAt(1.0);
     }
 
-    // View-space position (x right, y up, z towards the viewer).
+    // View-space position of a pixel centre (x right, y up, z forward).
     Vec3 viewPosition(int x, int y, double z) const {
         const double a = sx[std::size_t(x)], b = sy[std::size_t(y)];
-        return perspective ? Vec3{z * a, z * b, -z} : Vec3{a, b, -z};
+        return perspective ? Vec3{z * a, z * b, z} : Vec3{a, b, z};
     }
     // The quantity that is affine in image coordinates on a plane.
     double affine(double z) const { return perspective ? 1.0 / z : z; }
-    Vec3 toWorld(const Vec3& v) const { return right * v.x + up * v.y - forward * v.z; }
+    Vec3 toWorld(const Vec3& v) const { return right * v.x + up * v.y + forward * v.z; }
 };
 
 struct AxisSamples {
-    bool l1, l2, r1, r2;      // neighbours present (inside and on a surface)
+    bool l1, l2, r1, r2;  // neighbours present (inside and on a surface)
     double zl1, zl2, zr1, zr2;
 };
 
 enum class Side { Central, Left, Right, None };
 
-Side chooseSide(NormalMethod m, const AxisSamples& s, double zc, const ViewGeometry& g) {
+Side chooseSide(NormalMethod m, const AxisSamples& s, double zc, const PlaneOffsets& g) {
     if (!s.l1 && !s.r1) return Side::None;
     if (!s.l1) return Side::Right;
     if (!s.r1) return Side::Left;
@@ -66,23 +75,11 @@ Side chooseSide(NormalMethod m, const AxisSamples& s, double zc, const ViewGeome
 
 }  // namespace
 
-const std::vector<std::string>& normalMethodNames() {
-    static const std::vector<std::string> names{"central", "nearest", "extrapolated"};
-    return names;
-}
-
-NormalMethod parseNormalMethod(const std::string& name) {
-    if (name == "central") return NormalMethod::Central;
-    if (name == "nearest") return NormalMethod::Nearest;
-    if (name == "extrapolated") return NormalMethod::Extrapolated;
-    throw Error("unknown normal reconstruction method '" + name +
-                "'; expected central, nearest or extrapolated");
-}
-
-void reconstructNormals(Context& ctx, const float* depth, int w, int h, const Camera& camera,
-                        NormalMethod method, const NormalOutputs& out) {
-    const ViewGeometry g(camera, w, h);
+void reconstructNormals(Context& ctx, const float* depth, int w, int h, const Camera& camera, NormalMethod method,
+                        const NormalOutputs& out) {
+    const PlaneOffsets g(camera, w, h);
     const float nan = std::numeric_limits<float>::quiet_NaN();
+    const double zSign = out.viewZTowardsViewer ? -1.0 : 1.0;
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < w; ++x) {
@@ -126,12 +123,14 @@ void reconstructNormals(Context& ctx, const float* depth, int w, int h, const Ca
                 };
                 const Vec3 tx = tangent(1, 0, {1, 0, 0});
                 const Vec3 ty = tangent(0, 1, {0, -1, 0});  // image y runs down
-                const Vec3 toViewer = g.perspective ? -pc : Vec3{0, 0, 1};
-                Vec3 n = cross(ty, tx);
+                const Vec3 toViewer = g.perspective ? -pc : Vec3{0, 0, -1};
+                // z forward makes this frame left-handed: tx x ty is the
+                // normal on the viewer's side.
+                Vec3 n = cross(tx, ty);
                 const double len = length(n);
                 n = len > 0 && std::isfinite(len) ? n * (1.0 / len) : normalize(toViewer);
                 if (dot(n, toViewer) < 0) n = -n;  // visible surfaces face the camera
-                put(out.view, n);
+                put(out.view, {n.x, n.y, zSign * n.z});
                 if (out.world[0] || out.world[1] || out.world[2]) put(out.world, g.toWorld(n));
                 if (out.position[0] || out.position[1] || out.position[2])
                     put(out.position, camera.position + g.toWorld(pc));
@@ -139,8 +138,8 @@ void reconstructNormals(Context& ctx, const float* depth, int w, int h, const Ca
     });
 }
 
-void worldToViewNormals(Context& ctx, const float* const world[3], std::size_t count,
-                        const Camera& camera, float* const view[3]) {
+void worldToViewNormals(Context& ctx, const float* const world[3], std::size_t count, const Camera& camera,
+                        float* const view[3], bool zTowardsViewer) {
     Vec3 r, u, f;
     camera.basis(r, u, f);
     const int rows = int((count + 4095) / 4096);
@@ -149,9 +148,9 @@ void worldToViewNormals(Context& ctx, const float* const world[3], std::size_t c
             const Vec3 n{world[0][i], world[1][i], world[2][i]};
             view[0][i] = float(dot(n, r));
             view[1][i] = float(dot(n, u));
-            view[2][i] = float(-dot(n, f));
+            view[2][i] = float(zTowardsViewer ? -dot(n, f) : dot(n, f));
         }
     });
 }
 
-}  // namespace darkroom::passes
+}  // namespace darkroom

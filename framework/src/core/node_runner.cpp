@@ -1,0 +1,274 @@
+#include "node_runner.h"
+
+#include "hashing.h"
+#include "host_context.h"
+
+#include <darkroom/error.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+
+namespace darkroom {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Filters of a type that declares itself Unsafe share one lock.
+std::mutex& typeLock(const std::string& type) {
+    static std::mutex guard;
+    static std::map<std::string, std::unique_ptr<std::mutex>> locks;
+    std::lock_guard<std::mutex> g(guard);
+    auto& m = locks[type];
+    if (!m) m = std::make_unique<std::mutex>();
+    return *m;
+}
+
+std::string channelNames(const Buffer& b) {
+    std::string have;
+    for (const auto& c : b.channels()) have += (have.empty() ? "" : ", ") + c.name;
+    return have.empty() ? std::string("no channels") : have;
+}
+
+MetadataDelta deltaOf(const BufferMetadata& from, const BufferMetadata& to) {
+    MetadataDelta d;
+    if (!(from.camera == to.camera)) {
+        d.cameraChanged = true;
+        d.camera = to.camera;
+    }
+    for (const auto& [k, v] : to.attributes) {
+        auto it = from.attributes.find(k);
+        if (it == from.attributes.end() || it->second != v) d.set[k] = v;
+    }
+    for (const auto& [k, v] : from.attributes)
+        if (!to.attributes.count(k)) d.erased.push_back(k);
+    return d;
+}
+
+// Whether `out` is still exactly what derive() made from `in` (the filter may
+// have set or removed planes afterwards; then it is treated as fresh).
+bool stillDerived(const Buffer& out, const Buffer& in, const HostContext::Derivation& d) {
+    std::vector<ChannelDesc> expected;
+    auto isFresh = [&](const std::string& n) {
+        for (const auto& f : d.fresh)
+            if (f.name == n) return true;
+        return false;
+    };
+    for (const auto& c : in.channels()) {
+        if (std::find(d.drop.begin(), d.drop.end(), c.name) != d.drop.end()) continue;
+        if (isFresh(c.name)) {
+            for (const auto& f : d.fresh)
+                if (f.name == c.name) expected.push_back(f);
+        } else {
+            expected.push_back(c);
+            if (out.plane(c.name) != in.plane(c.name)) return false;
+        }
+    }
+    for (const auto& f : d.fresh)
+        if (!in.hasChannel(f.name)) expected.push_back(f);
+    return expected == out.channels() && out.width() == in.width() && out.height() == in.height();
+}
+
+}  // namespace
+
+FileStamp stampOf(const std::string& path) {
+    FileStamp s;
+    s.path = path;
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) return s;
+    s.exists = true;
+    const auto t = fs::last_write_time(path, ec);
+    if (!ec) s.mtimeNs = std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count();
+    if (fs::is_regular_file(status)) s.size = fs::file_size(path, ec);
+    return s;
+}
+
+BufferMetadata MetadataDelta::applyTo(const BufferMetadata& m) const {
+    BufferMetadata out = m;
+    if (cameraChanged) out.camera = camera;
+    for (const auto& [k, v] : set) out.attributes[k] = v;
+    for (const auto& k : erased) out.attributes.erase(k);
+    return out;
+}
+
+std::string nodeLabel(const std::string& name, const std::string& type) {
+    return "node '" + name + "'" + (type.empty() ? std::string() : " (" + type + ")");
+}
+
+NodeResult runNode(const NodeCall& call) {
+    const std::string label = nodeLabel(call.name, call.type);
+    const PortList& ports = *call.ports;
+    HostContext::Setup setup;
+    setup.nodeName = call.name;
+    setup.ports = call.ports;
+    setup.inputBase = call.inputBase;
+    setup.outputDir = call.outputDir;
+    setup.registry = call.registry;
+    setup.cancelFlag = call.cancel;
+    setup.onProgress = call.onProgress;
+    setup.onWarning = call.onWarning;
+
+    for (const auto& [name, values] : call.inputs) {
+        const PortSpec* in = ports.input(name);
+        if (!in) throw Error(label + ": has no input '" + name + "'");
+        std::vector<Value> vs;
+        for (const auto& v : values) {
+            Value x = v;
+            if (in->type == PortType::Float && std::holds_alternative<std::int64_t>(x.storage()))
+                x = Value(x.asFloat());
+            if (in->type == PortType::Image) {
+                const BufferPtr& b = x.asImage();
+                if (!b) throw Error(label + ": input '" + in->name + "' received no image");
+                for (const auto& c : in->channels)
+                    if (!b->hasChannel(c))
+                        throw Error(label + ": input '" + in->name + "' needs channel '" + c + "', but the image has " +
+                                    channelNames(*b));
+            } else {
+                try {
+                    checkValue(*in, x);
+                } catch (const Error& e) {
+                    throw Error(label + ": " + e.what());
+                }
+            }
+            vs.push_back(std::move(x));
+        }
+        if (!vs.empty()) setup.inputs[name] = std::move(vs);
+    }
+    for (const auto& in : ports.inputs)
+        if (in.type == PortType::Image && !in.optional && !in.multiple && !setup.inputs.count(in.name))
+            throw Error(label + ": input '" + in.name + "' is not connected");
+
+    HostContext ctx(std::move(setup));
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        std::unique_lock<std::mutex> typeGuard;
+        if (call.filter->threadSafety() == ThreadSafety::Unsafe)
+            typeGuard = std::unique_lock<std::mutex>(typeLock(call.type));
+        call.filter->execute(ctx);
+    } catch (const Cancelled&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw Error(label + ": ran out of memory");
+    } catch (const std::exception& e) {
+        // One error boundary for every call into a plugin.
+        throw Error(label + ": " + e.what());
+    } catch (...) {
+        throw Error(label + ": failed with an unknown exception");
+    }
+    if (ctx.cancelled()) throw Cancelled();
+
+    NodeResult r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.bytesAllocated = ctx.bytesAllocated();
+    for (const auto& out : ports.outputs)
+        if (!ctx.outputs().count(out.name)) throw Error(label + " did not produce its output '" + out.name + "'");
+
+    auto inputBuffer = [&](const std::string& port, int index) -> BufferPtr {
+        auto it = ctx.setup().inputs.find(port);
+        if (it == ctx.setup().inputs.end() || index >= int(it->second.size())) return nullptr;
+        return it->second[std::size_t(index)].asImage();
+    };
+    for (auto& [port, value] : ctx.outputs()) {
+        OutputOrigin o;
+        if (const auto* b = std::get_if<BufferPtr>(&value.storage()); b && *b) {
+            BufferPtr buffer = *b;
+            std::string inPort;
+            int index = 0;
+            if (TrackedBuffer::origin(buffer.get(), inPort, index)) {
+                // The input itself, passed on.
+                o.kind = OutputOrigin::Kind::Forward;
+                o.port = inPort;
+                o.index = index;
+                buffer = TrackedBuffer::unwrap(buffer);
+            } else if (const auto* d = ctx.derivation(buffer.get())) {
+                const BufferPtr in = inputBuffer(d->port, d->index);
+                if (in && stillDerived(*buffer, *in, *d)) {
+                    o.kind = OutputOrigin::Kind::Derived;
+                    o.port = d->port;
+                    o.index = d->index;
+                    o.fresh = d->fresh;
+                    o.drop = d->drop;
+                    o.delta = deltaOf(in->metadata(), buffer->metadata());
+                } else {
+                    o.kind = OutputOrigin::Kind::Fresh;
+                }
+            } else {
+                o.kind = OutputOrigin::Kind::Fresh;
+            }
+            sealPlanes(*buffer);
+            value = Value(std::move(buffer));
+        }
+        r.origins[port] = std::move(o);
+        r.outputs[port] = std::move(value);
+    }
+
+    for (const auto& [key, log] : ctx.readLogs()) {
+        const BufferPtr in = inputBuffer(key.first, key.second);
+        if (!in) continue;
+        InputRead read;
+        read.port = key.first;
+        read.index = key.second;
+        read.width = in->width();
+        read.height = in->height();
+        std::lock_guard<std::mutex> lock(log->mutex);
+        if ((read.channelList = log->channelList)) read.channelListHash = hashing::hashChannels(in->channels());
+        if ((read.metadata = log->metadata)) read.metadataHash = hashing::hashMetadata(in->metadata());
+        for (const auto& [name, unused] : log->channels) {
+            InputRead::PlaneRead p;
+            p.name = name;
+            if (const PlanePtr plane = in->plane(name)) {
+                p.id = plane->id();
+                p.type = int(*in->channelType(name));
+            }
+            read.planes.push_back(std::move(p));
+        }
+        r.reads.push_back(std::move(read));
+    }
+
+    std::vector<std::string> files = ctx.filesRead();
+    for (const auto& in : ports.inputs)
+        if (in.type == PortType::Path) {
+            const std::string& path = ctx.value(in.name).asString();
+            if (!path.empty()) files.push_back(ctx.resolveInputPath(path));
+        }
+    for (const auto& f : files) r.files.push_back(stampOf(f));
+    return r;
+}
+
+bool stillMatches(const InputRead& read, const Buffer& b) {
+    if (b.width() != read.width || b.height() != read.height) return false;
+    if (read.channelList && hashing::hashChannels(b.channels()) != read.channelListHash) return false;
+    if (read.metadata && hashing::hashMetadata(b.metadata()) != read.metadataHash) return false;
+    for (const auto& p : read.planes) {
+        const PlanePtr plane = b.plane(p.name);
+        const std::uint64_t id = plane ? plane->id() : 0;
+        if (id != p.id) return false;
+        if (plane && int(*b.channelType(p.name)) != p.type) return false;
+    }
+    return true;
+}
+
+BufferPtr rederive(const OutputOrigin& o, const Buffer& previous, const Buffer& input) {
+    auto out = makeHostBuffer(input.width(), input.height());
+    out->metadata() = o.delta.applyTo(input.metadata());
+    auto freshDesc = [&](const std::string& name) -> const ChannelDesc* {
+        for (const auto& f : o.fresh)
+            if (f.name == name) return &f;
+        return nullptr;
+    };
+    for (const auto& c : input.channels()) {
+        if (std::find(o.drop.begin(), o.drop.end(), c.name) != o.drop.end()) continue;
+        if (const ChannelDesc* f = freshDesc(c.name))
+            out->setPlane(*f, previous.plane(f->name));
+        else
+            out->setPlane(c, input.plane(c.name));
+    }
+    for (const auto& f : o.fresh)
+        if (!input.hasChannel(f.name)) out->setPlane(f, previous.plane(f.name));
+    return out;
+}
+
+}  // namespace darkroom

@@ -1,0 +1,134 @@
+#include "plane_pool.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+namespace darkroom {
+
+namespace {
+
+constexpr std::size_t kAlignment = 64;  // a cache line: SIMD loads never straddle one at a row start
+
+std::size_t roundedBytes(std::size_t pixels) {
+    const std::size_t b = std::max<std::size_t>(pixels, 1) * 4;
+    return (b + kAlignment - 1) / kAlignment * kAlignment;
+}
+
+// Fills in parallel in 1 MiB pieces: on fresh memory this spreads the page
+// faults over the cores instead of taking them all on one.
+void fill(void* p, std::size_t bytes, std::uint32_t word) {
+    constexpr std::size_t piece = std::size_t(1) << 20;
+    const std::size_t pieces = (bytes + piece - 1) / piece;
+    auto body = [&](std::size_t k) {
+        char* b = static_cast<char*>(p) + k * piece;
+        const std::size_t n = std::min(piece, bytes - k * piece);
+        if (word == 0) {
+            std::memset(b, 0, n);
+        } else {
+            auto* w = reinterpret_cast<std::uint32_t*>(b);
+            std::fill(w, w + n / 4, word);
+        }
+    };
+    if (pieces <= 1) {
+        if (pieces == 1) body(0);
+        return;
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pieces), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) body(k);
+    });
+}
+
+}  // namespace
+
+// DARKROOM_POISON_PLANES=1 turns poisoning on for a whole process (the test
+// suite sets it).
+PlanePool::PlanePool() {
+    const char* env = std::getenv("DARKROOM_POISON_PLANES");
+    poison_ = env && *env && *env != '0';
+}
+
+PlanePool& PlanePool::shared() {
+    // Never destroyed: planes may be released during static destruction.
+    static PlanePool* pool = new PlanePool();
+    return *pool;
+}
+
+std::shared_ptr<HostPlane> PlanePool::acquire(std::size_t pixels, Fill how) {
+    const std::size_t bytes = roundedBytes(pixels);
+    void* storage = nullptr;
+    bool poison = false;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        poison = poison_;
+        auto it = idle_.find(bytes);
+        if (it != idle_.end()) {
+            storage = it->second;
+            idle_.erase(it);
+            idleBytes_ -= bytes;
+            ++stats_.reusedAllocations;
+        } else {
+            ++stats_.freshAllocations;
+        }
+    }
+    if (!storage) {
+        storage = std::aligned_alloc(kAlignment, bytes);
+        if (!storage) throw std::bad_alloc();
+    }
+    if (how == Fill::Zero)
+        fill(storage, bytes, 0u);
+    else if (poison)
+        fill(storage, bytes, kPoison);
+    return std::make_shared<HostPlane>(storage, pixels, [this, bytes](void* s) { release(s, bytes); });
+}
+
+void PlanePool::release(void* storage, std::size_t bytes) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (idleBytes_ + bytes <= idleCapacity_) {
+            idle_.emplace(bytes, storage);
+            idleBytes_ += bytes;
+            return;
+        }
+    }
+    std::free(storage);
+}
+
+void PlanePool::setIdleCapacity(std::size_t bytes) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    idleCapacity_ = bytes;
+    while (idleBytes_ > idleCapacity_ && !idle_.empty()) {
+        auto it = std::prev(idle_.end());  // the largest first
+        idleBytes_ -= it->first;
+        std::free(it->second);
+        idle_.erase(it);
+    }
+}
+
+std::size_t PlanePool::idleBytes() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return idleBytes_;
+}
+
+void PlanePool::trim() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto& [bytes, p] : idle_) std::free(p);
+    idle_.clear();
+    idleBytes_ = 0;
+}
+
+void PlanePool::setPoison(bool on) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    poison_ = on;
+}
+
+PlanePool::Stats PlanePool::stats() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return stats_;
+}
+
+}  // namespace darkroom
