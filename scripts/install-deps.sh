@@ -16,6 +16,8 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libgl-dev xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the SDK ABI check (tests/sdk/check_abi.sh)
+  abigail-tools
   "$@"
 )
 

@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
     using namespace darkroom::cli;
     CLI::App app{"Darkroom: deferred shading of scientific datasets (SDK " DARKROOM_SDK_VERSION ")", "darkroom"};
     app.require_subcommand(1);
+    // Global options are accepted after the subcommand too:
+    // `darkroom run demo.yaml -q`, `darkroom plugins --plugin-path DIR`.
+    app.fallthrough();
     app.set_version_flag("--version", "darkroom " DARKROOM_SDK_VERSION);
     GlobalOptions global;
     app.add_option("--plugin-path", global.pluginPaths,

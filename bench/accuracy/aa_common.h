@@ -106,7 +106,7 @@ inline std::shared_ptr<WritableBuffer> errorImage(const Buffer& a, const Buffer&
         for (std::size_t i = 0; i < n; ++i) e[i] += std::abs(pa[i] - pb[i]) / 3.0f;
     }
     for (const char* c : kRgb) {
-        float* p = out->hostFloat(c);
+        float* p = out->writeFloat(c);
         for (std::size_t i = 0; i < n; ++i) p[i] = std::min(1.0f, gain * e[i]);
     }
     return out;
@@ -127,11 +127,11 @@ inline std::string writePanel(const Harness& harness, const std::vector<const Bu
     const int side = crop * zoom;
     const int width = int(images.size()) * side + (int(images.size()) - 1) * kGap;
     auto out = makeCpuBuffer(width, side, {{"R"}, {"G"}, {"B"}});
-    for (const char* c : kRgb) std::fill_n(out->hostFloat(c), out->pixelCount(), 1.0f);
+    for (const char* c : kRgb) std::fill_n(out->writeFloat(c), out->pixelCount(), 1.0f);
     for (std::size_t k = 0; k < images.size(); ++k)
         for (const char* c : kRgb) {
             const float* src = images[k]->requireFloat(c);
-            float* dst = out->hostFloat(c);
+            float* dst = out->writeFloat(c);
             for (int y = 0; y < side; ++y)
                 for (int x = 0; x < side; ++x)
                     dst[std::size_t(y) * width + std::size_t(k) * (side + kGap) + x] =

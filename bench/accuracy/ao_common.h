@@ -50,7 +50,7 @@ inline std::shared_ptr<WritableBuffer> upsampleBilinear(const Buffer& src, const
                                                         int h) {
     auto out = makeCpuBuffer(w, h, {{channel, ChannelType::Float32}});
     const float* in = src.requireFloat(channel);
-    float* o = out->requireFloat(channel);
+    float* o = out->writeFloat(channel);
     const int sw = src.width(), sh = src.height();
     const double fx = double(sw) / w, fy = double(sh) / h;
     for (int y = 0; y < h; ++y) {
@@ -71,13 +71,13 @@ inline std::shared_ptr<WritableBuffer> upsampleBilinear(const Buffer& src, const
 
 // A panel of `count` equally sized w x h tiles side by side, 2 px apart, with
 // channels R, G, B (mid grey between tiles). tile(i, x, y, rgb) fills one pixel.
-template <class Fill>
-std::shared_ptr<WritableBuffer> panel(int w, int h, int count, Fill&& tile) {
+template <class TileFn>
+std::shared_ptr<WritableBuffer> panel(int w, int h, int count, TileFn&& tile) {
     constexpr int kGap = 2;
     const int pw = count * w + (count - 1) * kGap;
     auto out = makeCpuBuffer(pw, h, {{"R", ChannelType::Float32}, {"G", ChannelType::Float32},
                                      {"B", ChannelType::Float32}});
-    float* c[3] = {out->requireFloat("R"), out->requireFloat("G"), out->requireFloat("B")};
+    float* c[3] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B")};
     for (int y = 0; y < h; ++y)
         for (int px = 0; px < pw; ++px) {
             const int i = px / (w + kGap), x = px % (w + kGap);

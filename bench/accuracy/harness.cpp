@@ -83,6 +83,7 @@ BufferPtr Harness::runPass(const std::string& type, const BufferPtr& input,
     FilterRunOptions o;
     o.threads = options_.threads;
     o.registry = registry_.get();
+    o.poison = false;  // timed
     FilterRunResult r = runFilter(*filter, inputs, o);
     return r.outputs.at("image").asImage();
 }

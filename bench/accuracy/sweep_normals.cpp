@@ -26,7 +26,7 @@ constexpr double kErrorWhite = 45.0;
 
 BufferPtr depthOnly(const Buffer& gbuffer) {
     auto out = makeCpuBuffer(gbuffer.width(), gbuffer.height(), {{"Z", ChannelType::Float32}});
-    std::copy_n(gbuffer.requireFloat("Z"), gbuffer.pixelCount(), out->requireFloat("Z"));
+    std::copy_n(gbuffer.requireFloat("Z"), gbuffer.pixelCount(), out->writeFloat("Z"));
     out->metadata() = gbuffer.metadata();
     return out;
 }

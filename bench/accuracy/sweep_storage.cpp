@@ -133,9 +133,9 @@ std::shared_ptr<WritableBuffer> subset(const Buffer& src, const std::vector<std:
     const std::size_t n = src.pixelCount();
     for (std::size_t i = 0; i < channels.size(); ++i) {
         if (desc[i].type == ChannelType::UInt32)
-            std::memcpy(out->hostUInt(rename[i]), src.hostUInt(channels[i]), n * 4);
+            std::memcpy(out->writeUInt(rename[i]), src.hostUInt(channels[i]), n * 4);
         else
-            std::memcpy(out->hostFloat(rename[i]), src.hostFloat(channels[i]), n * 4);
+            std::memcpy(out->writeFloat(rename[i]), src.hostFloat(channels[i]), n * 4);
     }
     return out;
 }
@@ -267,7 +267,7 @@ private:
         const Variant zipHalf{"zip", true};
         for (const double k : {0.0, 1.0, 4.0, 16.0, 64.0}) {
             const auto shifted = subset(*gbuffer_, {s_.colorField}, {"field"});
-            float* f = shifted->hostFloat("field");
+            float* f = shifted->writeFloat("field");
             for (std::size_t p = 0; p < shifted->pixelCount(); ++p) f[p] = float(double(f[p]) + k * range);
             const std::string setting = k == 0 ? "scalar" : "scalar + " + std::to_string(int(k)) + " ranges";
             const BufferPtr back = k == 0 ? scalarHalf_ : store(*shifted, {}, zipHalf, setting);

@@ -15,12 +15,12 @@ std::vector<darkroom::BufferPtr> layers(int size, int n) {
         const std::size_t px = g->pixelCount();
         for (const auto& c : g->channels()) {
             if (c.type == darkroom::ChannelType::UInt32) {
-                std::copy_n(g->hostUInt(c.name), px, b->hostUInt(c.name));
+                std::copy_n(g->hostUInt(c.name), px, b->writeUInt(c.name));
                 continue;
             }
-            std::copy_n(g->hostFloat(c.name), px, b->hostFloat(c.name));
+            std::copy_n(g->hostFloat(c.name), px, b->writeFloat(c.name));
         }
-        float* z = b->hostFloat("Z");
+        float* z = b->writeFloat("Z");
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x)
                 z[std::size_t(y) * size + x] += 0.3f * float(std::sin(0.02 * x * (k + 1) + 0.013 * y * (3 - k)));

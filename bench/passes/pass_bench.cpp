@@ -4,6 +4,7 @@
 #include <darkroom/framework/run_filter.h>
 
 #include <chrono>
+#include <set>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -42,13 +43,13 @@ BufferPtr syntheticGBuffer(int size) {
     cam.position = {0, 0, 5};
     cam.forward = {0, 0, -1};
     b->metadata().camera = cam;
-    float* z = b->hostFloat("Z");
-    float* v = b->hostFloat("value");
-    float* nx = b->hostFloat("N.x");
-    float* ny = b->hostFloat("N.y");
-    float* nz = b->hostFloat("N.z");
-    float* rgba[4] = {b->hostFloat("R"), b->hostFloat("G"), b->hostFloat("B"), b->hostFloat("A")};
-    std::uint32_t* id = b->hostUInt("objectId");
+    float* z = b->writeFloat("Z");
+    float* v = b->writeFloat("value");
+    float* nx = b->writeFloat("N.x");
+    float* ny = b->writeFloat("N.y");
+    float* nz = b->writeFloat("N.z");
+    float* rgba[4] = {b->writeFloat("R"), b->writeFloat("G"), b->writeFloat("B"), b->writeFloat("A")};
+    std::uint32_t* id = b->writeUInt("objectId");
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             const std::size_t i = std::size_t(y) * size + x;
@@ -76,11 +77,19 @@ void timePass(benchmark::State& state, Filter& filter, const std::map<std::strin
               int size, int channelsRead) {
     FilterRunOptions o;
     o.registry = &registry();
-    // One warm-up run tells how many channels the pass writes.
+    o.poison = false;
+    // One warm-up run tells how many planes the pass writes: those of its
+    // outputs that are not an input's plane passed on.
     const FilterRunResult warm = runFilter(filter, inputs, o);
+    std::set<const Plane*> inputPlanes;
+    for (const auto& [port, values] : inputs)
+        for (const auto& v : values)
+            if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b)
+                for (const auto& c : (*b)->channels()) inputPlanes.insert((*b)->plane(c.name).get());
     std::size_t written = 0;
     for (const auto& [k, v] : warm.outputs)
-        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b) written += (*b)->channels().size();
+        if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b)
+            for (const auto& c : (*b)->channels()) written += inputPlanes.count((*b)->plane(c.name).get()) ? 0 : 1;
     const std::size_t bytes = std::size_t(size) * size * 4 * (std::size_t(channelsRead) + written);
     const double copy = memcpySeconds(bytes);
     double total = 0;

@@ -70,23 +70,13 @@ const std::uint32_t* Buffer::requireUInt(std::string_view channel) const {
     throw Error(describeMissing(*this, channel, "uint32"));
 }
 
-static std::string describeNotWritable(const WritableBuffer& b, std::string_view channel, ChannelType t) {
+static std::string describeNotWritable(const Buffer& b, std::string_view channel, ChannelType t) {
     const auto have = b.channelType(channel);
     if (have && *have == t)
         return "channel '" + std::string(channel) +
-               "' is shared with the input and cannot be written; list it among the fresh channels of "
+               "' is shared with another buffer and cannot be written; list it among the fresh channels of "
                "Context::derive to replace it";
     return describeMissing(b, channel, toString(t));
-}
-
-float* WritableBuffer::requireFloat(std::string_view channel) {
-    if (float* p = hostFloat(channel)) return p;
-    throw Error(describeNotWritable(*this, channel, ChannelType::Float32));
-}
-
-std::uint32_t* WritableBuffer::requireUInt(std::string_view channel) {
-    if (std::uint32_t* p = hostUInt(channel)) return p;
-    throw Error(describeNotWritable(*this, channel, ChannelType::UInt32));
 }
 
 namespace {
@@ -116,11 +106,13 @@ public:
             if (channels_[i].name == n) return planes_[i];
         return nullptr;
     }
-    float* hostFloat(std::string_view n) override {
-        return static_cast<float*>(writable(find(n, ChannelType::Float32)));
+    float* writeFloat(std::string_view n) override {
+        if (void* p = writable(find(n, ChannelType::Float32))) return static_cast<float*>(p);
+        throw Error(describeNotWritable(*this, n, ChannelType::Float32));
     }
-    std::uint32_t* hostUInt(std::string_view n) override {
-        return static_cast<std::uint32_t*>(writable(find(n, ChannelType::UInt32)));
+    std::uint32_t* writeUInt(std::string_view n) override {
+        if (void* p = writable(find(n, ChannelType::UInt32))) return static_cast<std::uint32_t*>(p);
+        throw Error(describeNotWritable(*this, n, ChannelType::UInt32));
     }
     void setPlane(const ChannelDesc& c, PlanePtr p) override {
         if (!p) throw Error("channel '" + c.name + "': no plane given");

@@ -12,6 +12,13 @@ namespace fs = std::filesystem;
 
 namespace darkroom::test {
 
+namespace {
+// Poisoned planes in every test process: a pixel a pass leaves unwritten
+// (Fill::None) shows as a NaN pattern instead of stale memory. Set before
+// main(), so before the plane pool first reads it.
+const bool g_poison = [] { return ::setenv("DARKROOM_POISON_PLANES", "1", 0) == 0; }();
+}  // namespace
+
 Registry& pluginRegistry() {
     static Registry* registry = [] {
         auto* r = new Registry();
@@ -44,7 +51,7 @@ std::shared_ptr<WritableBuffer> makeImage(int w, int h, const std::vector<std::s
     for (const auto& c : channels) desc.push_back({c, ChannelType::Float32});
     auto b = makeCpuBuffer(w, h, desc);
     for (std::size_t c = 0; c < channels.size(); ++c) {
-        float* p = b->hostFloat(channels[c]);
+        float* p = b->writeFloat(channels[c]);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) p[std::size_t(y) * w + x] = fn(x, y, int(c));
     }

@@ -145,7 +145,7 @@ bool MainWindow::exportView(const QString& path) {
             // writeImage expects.
             const QImage& d = render_->displayImage();
             auto b = darkroom::makeCpuBuffer(d.width(), d.height(), {{"R"}, {"G"}, {"B"}, {"A"}});
-            float* ch[4] = {b->requireFloat("R"), b->requireFloat("G"), b->requireFloat("B"), b->requireFloat("A")};
+            float* ch[4] = {b->writeFloat("R"), b->writeFloat("G"), b->writeFloat("B"), b->writeFloat("A")};
             for (int y = 0; y < d.height(); ++y) {
                 const QRgb* row = reinterpret_cast<const QRgb*>(d.constScanLine(y));
                 for (int x = 0; x < d.width(); ++x) {

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "profile_report.h"
 #include "progress_bar.h"
 
 #include <darkroom/error.h>
@@ -9,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <chrono>
 #include <filesystem>
 
 namespace darkroom::cli {
@@ -80,6 +82,8 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         int threads = 0;
         std::string foreach;
         std::string where;
+        bool profile = false;
+        double cacheMB = 2048;
     };
     auto a = std::make_shared<Args>();
     cmd->add_option("PIPELINE", a->path, "Pipeline YAML file")->required();
@@ -94,6 +98,14 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         ->needs(fe)
         ->type_name("QUERY");
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--profile", a->profile,
+                  "Print each node's time, whether it ran or came from the cache, and the memory it allocated "
+                  "(per entry with --foreach)");
+    cmd->add_option("--cache-memory", a->cacheMB,
+                    "With --foreach: memory for results kept between entries, in MiB (least recently used "
+                    "dropped first; default 2048)")
+        ->check(CLI::NonNegativeNumber)
+        ->type_name("MB");
     cmd->callback([&global, &run, a] {
         run = [&global, a] {
             const Registry& r = loadRegistry(global);
@@ -114,6 +126,11 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             o.threads = a->threads;
             o.inputBase = std::filesystem::path(a->path).parent_path().string();
             o.outputDir = a->output;
+            o.cacheBytes = std::size_t(a->cacheMB * 1024 * 1024);
+            // One evaluation needs no cache: results are dropped as soon as
+            // nothing downstream needs them. Entries of --foreach share what
+            // does not depend on the entry.
+            o.retainIntermediate = !a->foreach.empty();
             ProgressBar bar("run", !global.quiet && stderrIsTerminal());
             o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
             o.onWarning = [&bar](const Diagnostic& w) {
@@ -121,9 +138,18 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                 report({w});
             };
             Evaluator ev(o);
+            auto evaluate = [&](const std::string& title) {
+                const auto t0 = std::chrono::steady_clock::now();
+                ev.run(g);
+                if (a->profile) {
+                    bar.finish();
+                    printProfile(title, ev.lastProfile(),
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                }
+            };
             try {
                 if (a->foreach.empty()) {
-                    ev.run(g);
+                    evaluate(a->path);
                 } else {
                     const Node* reader = g.node(a->foreach);
                     if (!reader || !g.ports(*reader).input("database") || !g.ports(*reader).input("parameters")) {
@@ -158,7 +184,8 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                             bar.update((double(i) + f) / n, entry);
                         };
                         ev.setOptions(o);
-                        ev.run(g);
+                        evaluate("entry " + entry + " (" + std::to_string(i + 1) + " of " +
+                                 std::to_string(rows.size()) + ")");
                     }
                 }
             } catch (const GraphError& e) {

@@ -222,7 +222,7 @@ std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db, co
             }
             attrs["depth.convention"] = convention;
         }
-        float* dst = out->hostFloat(ch.bufferName());
+        float* dst = out->writeFloat(ch.bufferName());
         std::fill(dst, dst + std::size_t(W) * H, background);
         for (int y = 0; y < layer.height; ++y)
             std::copy_n(values.data() + std::size_t(y) * layer.width, layer.width,

@@ -49,7 +49,7 @@ std::shared_ptr<WritableBuffer> npzBuffer(const std::string& path) {
     for (const auto& a : arrays) {
         const std::size_t k = a.shape.size() == 3 ? a.shape[2] : 1;
         for (std::size_t c = 0; c < k; ++c, ++ch) {
-            float* dst = out->hostFloat(channels[ch].name);
+            float* dst = out->writeFloat(channels[ch].name);
             for (std::size_t i = 0; i < w * h; ++i) dst[i] = a.values[i * k + c];
         }
     }

@@ -315,10 +315,10 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
 void Evaluator::enforceCap(const std::set<std::string>& targets) {
     if (options_.cacheBytes == 0) return;
     if (cachedBytesLocked() <= options_.cacheBytes) return;
-    // Least recently used first; what this evaluation asked for last of all.
+    // Least recently used first; never what this evaluation was asked for.
     std::vector<std::pair<std::uint64_t, std::string>> order;
     for (const auto& [name, st] : states_)
-        if (st->valid) order.emplace_back(st->lastUsed * 2 + (targets.count(name) ? 1 : 0), name);
+        if (st->valid && !targets.count(name)) order.emplace_back(st->lastUsed, name);
     std::sort(order.begin(), order.end());
     for (const auto& [age, name] : order) {
         if (cachedBytesLocked() <= options_.cacheBytes) break;

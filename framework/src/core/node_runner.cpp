@@ -3,6 +3,7 @@
 #include "hashing.h"
 #include "host_context.h"
 
+#include <darkroom/colormap.h>
 #include <darkroom/error.h>
 
 #include <chrono>
@@ -229,11 +230,13 @@ NodeResult runNode(const NodeCall& call) {
     }
 
     std::vector<std::string> files = ctx.filesRead();
-    for (const auto& in : ports.inputs)
-        if (in.type == PortType::Path) {
-            const std::string& path = ctx.value(in.name).asString();
-            if (!path.empty()) files.push_back(ctx.resolveInputPath(path));
-        }
+    for (const auto& in : ports.inputs) {
+        const bool file = in.type == PortType::Path ||
+                          (in.type == PortType::ColorMap && !isColorMapPreset(ctx.value(in.name).asString()));
+        if (!file) continue;
+        const std::string& path = ctx.value(in.name).asString();
+        if (!path.empty()) files.push_back(ctx.resolveInputPath(path));
+    }
     for (const auto& f : files) r.files.push_back(stampOf(f));
     return r;
 }

@@ -2,7 +2,10 @@
 #include <darkroom/framework/registry.h>
 #include <darkroom/plugin.h>
 
+#include "plugin_scan.h"
+
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
@@ -74,31 +77,69 @@ std::vector<std::string> Registry::defaultSearchPath(const std::vector<std::stri
 Diagnostics Registry::loadPlugins(const std::vector<std::string>& searchPath) {
     Diagnostics out;
     std::set<std::string> seen;
+    std::vector<std::string> files;
     for (const auto& entry : searchPath) {
         std::error_code ec;
         if (fs::is_regular_file(entry, ec)) {
             const std::string canonical = fs::weakly_canonical(entry, ec).string();
-            if (seen.insert(canonical).second) loadPlugin(entry, out);
+            if (seen.insert(canonical).second) files.push_back(entry);
             continue;
         }
         if (!fs::is_directory(entry, ec)) {
-            Diagnostic d = pluginError(entry, "plugin search path entry does not exist");
+            Diagnostic d = pluginError(entry, ec && ec != std::errc::no_such_file_or_directory
+                                                  ? "plugin search path entry cannot be read: " + ec.message()
+                                                  : "plugin search path entry does not exist");
             d.severity = Diagnostic::Severity::Warning;
             out.push_back(d);
             continue;
         }
-        std::vector<std::string> files;
-        for (const auto& f : fs::directory_iterator(entry, ec)) {
-            const std::string name = f.path().filename().string();
-            if (f.is_regular_file() && name.rfind("darkroom-", 0) == 0 && f.path().extension() == ".so")
-                files.push_back(f.path().string());
+        std::vector<std::string> found;
+        fs::directory_iterator it(entry, ec), end;
+        for (; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.rfind("darkroom-", 0) != 0 || it->path().extension() != ".so") continue;
+            // Error-code forms throughout: a symlink loop or a dangling link
+            // is reported, never thrown.
+            std::error_code fe;
+            const bool regular = it->is_regular_file(fe);
+            if (fe) {
+                Diagnostic d = pluginError(it->path().string(), "cannot inspect plugin file: " + fe.message() + "; skipped");
+                d.severity = Diagnostic::Severity::Warning;
+                out.push_back(d);
+                continue;
+            }
+            if (regular) found.push_back(it->path().string());
         }
-        std::sort(files.begin(), files.end());  // deterministic load order
-        for (const auto& f : files) {
-            const std::string canonical = fs::weakly_canonical(f, ec).string();
-            if (seen.insert(canonical).second) loadPlugin(f, out);
+        if (ec) out.push_back(pluginError(entry, "cannot list plugin folder: " + ec.message()));
+        std::sort(found.begin(), found.end());  // deterministic load order
+        for (const auto& f : found) {
+            std::error_code ce;
+            const std::string canonical = fs::weakly_canonical(f, ce).string();
+            if (seen.insert(ce ? f : canonical).second) files.push_back(f);
         }
     }
+
+    // New or changed files are first loaded in a child process; those that
+    // crash, exit or hang there are named and skipped.
+    PluginScan scan;
+    if (!scan.available() && !files.empty()) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.where = "plugins";
+        d.message = "darkroom-plugin-probe was not found beside the Darkroom libraries; plugins are loaded without "
+                    "the crash check";
+        out.push_back(d);
+    }
+    for (const auto& f : files) {
+        const ProbeVerdict v = scan.check(f);
+        if (!v.ok) {
+            out.push_back(pluginError(f, "plugin quarantined (tried in a separate process first): " + v.reason +
+                                             "; skipped (it is tried again when the file changes)"));
+            continue;
+        }
+        loadPlugin(f, out);
+    }
+    scan.save();
     return out;
 }
 
@@ -115,7 +156,19 @@ bool Registry::loadPlugin(const std::string& path, Diagnostics& out) {
         out.push_back(pluginError(path, "not a Darkroom plugin: it does not export " DARKROOM_PLUGIN_ENTRY_SYMBOL "()"));
         return false;
     }
-    const DarkroomPluginInfo* info = entry();
+    // No exception may cross the C boundary, but a plugin written without
+    // the SDK's macro might let one through: it is caught and named here.
+    const DarkroomPluginInfo* info = nullptr;
+    try {
+        info = entry();
+    } catch (const std::exception& e) {
+        out.push_back(pluginError(path, std::string("an exception escaped " DARKROOM_PLUGIN_ENTRY_SYMBOL "(): ") + e.what() +
+                                            "; skipped"));
+        return false;
+    } catch (...) {
+        out.push_back(pluginError(path, "an exception escaped " DARKROOM_PLUGIN_ENTRY_SYMBOL "(); skipped"));
+        return false;
+    }
     if (!info) {
         out.push_back(pluginError(path, DARKROOM_PLUGIN_ENTRY_SYMBOL "() returned no plugin information"));
         return false;
@@ -136,12 +189,23 @@ bool Registry::loadPlugin(const std::string& path, Diagnostics& out) {
     }
     StagingRegistrar staging;
     char error[1024] = {0};
-    if (info->register_types(&staging, error, sizeof error) != 0) {
+    int failed = 0;
+    try {
+        failed = info->register_types(&staging, error, sizeof error);
+    } catch (const std::exception& e) {
+        std::snprintf(error, sizeof error, "an exception escaped the register function: %s", e.what());
+        failed = 1;
+    } catch (...) {
+        std::snprintf(error, sizeof error, "an exception escaped the register function");
+        failed = 1;
+    }
+    if (failed != 0) {
         out.push_back(pluginError(path, "plugin '" + origin.plugin + "' failed to register its types: " +
                                             (error[0] ? error : "no reason given") + "; skipped"));
         return false;
     }
     try {
+        checkRegistrations(staging.filters);
         commit(origin, std::move(staging.filters), std::move(staging.backends));
     } catch (const Error& e) {
         out.push_back(pluginError(path, std::string(e.what()) + "; plugin '" + origin.plugin + "' skipped"));
@@ -151,9 +215,25 @@ bool Registry::loadPlugin(const std::string& path, Diagnostics& out) {
     return true;
 }
 
+// Every filter is made once and its ports checked (unique names, defaults
+// inside their ranges, enum defaults among the choices), so a misspelt choice
+// fails here, naming the type, and never reaches a pipeline.
+void Registry::checkRegistrations(const std::vector<FilterInfo>& filters) {
+    for (const auto& f : filters) {
+        try {
+            std::unique_ptr<Filter> made = f.create();
+            if (!made) throw Error("its factory returned nothing");
+            checkPorts(made->ports());
+        } catch (const std::exception& e) {
+            throw Error("type '" + f.type + "' is declared wrongly: " + e.what());
+        }
+    }
+}
+
 void Registry::registerBuiltin(const std::string& pluginName, void (*fn)(Registrar&)) {
     StagingRegistrar staging;
     fn(staging);
+    checkRegistrations(staging.filters);
     commit(Origin{pluginName, DARKROOM_SDK_VERSION, ""}, std::move(staging.filters),
            std::move(staging.backends));
     plugins_.back().sdkVersion = DARKROOM_SDK_VERSION;

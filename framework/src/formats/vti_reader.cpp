@@ -164,7 +164,7 @@ VtiImage readVti(const std::string& path) {
                                         {}});
         }
         for (int k = 0; k < a.components; ++k, ++ch) {
-            float* dst = out.buffer->hostFloat(channels[ch].name);
+            float* dst = out.buffer->writeFloat(channels[ch].name);
             for (long long y = 0; y < H; ++y)
                 for (long long x = 0; x < W; ++x) {
                     const float v = float(a.values[std::size_t((H - 1 - y) * W + x) * a.components + std::size_t(k)]);

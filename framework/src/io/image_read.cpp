@@ -125,11 +125,11 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
         for (int c = begin; c < end; ++c) {
             const std::size_t k = std::size_t(c - begin);
             if (isUInt) {
-                std::uint32_t* dst = buffer->hostUInt(names[c]);
+                std::uint32_t* dst = buffer->writeUInt(names[c]);
                 for (std::size_t p = 0; p < pixels; ++p) dst[p] = scratch[p * n + k];
                 continue;
             }
-            float* dst = buffer->hostFloat(names[c]);
+            float* dst = buffer->writeFloat(names[c]);
             const float* src = reinterpret_cast<const float*>(scratch.data());
             const bool alpha = c == spec.alpha_channel || names[c] == "A" || names[c] == "a";
             const bool decode = decodeSrgb && kinds[c] == Kind::Normalised && !alpha;

@@ -47,9 +47,9 @@ BufferPtr ambientOcclusion(CaptureBackend& backend, const Camera& camera, const 
     out->metadata().attributes["units.Z"] = "world";
     out->metadata().attributes["reference.AO"] =
         std::string(toString(options.weighting)) + ", " + std::to_string(options.samples) + " rays per pixel";
-    float* zo = out->hostFloat("Z");
-    float* ao = out->hostFloat("AO");
-    float* se = out->hostFloat("AO.stderr");
+    float* zo = out->writeFloat("Z");
+    float* ao = out->writeFloat("AO");
+    float* se = out->writeFloat("AO.stderr");
     std::copy(z, z + gbuffer->pixelCount(), zo);
 
     const std::size_t samples = std::size_t(options.samples);

@@ -30,7 +30,7 @@ BufferPtr averageSamples(CaptureBackend& backend, const Camera& camera, const Ca
     const int w = camera.width, h = camera.height;
     auto out = ctx.allocate(w, h, {{"R"}, {"G"}, {"B"}, {"A"}});
     out->metadata().camera = camera;
-    float* dst[4] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B"), out->hostFloat("A")};
+    float* dst[4] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B"), out->writeFloat("A")};
     const int rowsPerBatch = int(std::max<std::size_t>(1, kRaysPerBatch / (perPixel * std::size_t(w))));
     RayBatch rays;
     for (int y0 = 0; y0 < h; y0 += rowsPerBatch) {

@@ -33,9 +33,9 @@ GBufferWriter::GBufferWriter(const Scene& scene, const CaptureRequest& request, 
     for (const auto& o : scene.objects)
         objects_.push_back({o.representation, o.vertices.data(), o.indices.data(),
                             o.primitiveCell.empty() ? nullptr : o.primitiveCell.data()});
-    z_ = buffer.requireFloat("Z");
+    z_ = buffer.writeFloat("Z");
     for (const auto& name : request.scalars) {
-        scalars_.push_back(buffer.requireFloat(name));
+        scalars_.push_back(buffer.writeFloat(name));
         for (const auto& o : scene.objects) {
             FieldRef ref;
             if (const ScalarField* f = o.field(name)) {
@@ -46,12 +46,12 @@ GBufferWriter::GBufferWriter(const Scene& scene, const CaptureRequest& request, 
         }
     }
     if (request.normals) {
-        n_[0] = buffer.requireFloat("N.x");
-        n_[1] = buffer.requireFloat("N.y");
-        n_[2] = buffer.requireFloat("N.z");
+        n_[0] = buffer.writeFloat("N.x");
+        n_[1] = buffer.writeFloat("N.y");
+        n_[2] = buffer.writeFloat("N.z");
     }
-    if (request.objectId) objectId_ = buffer.requireUInt("objectId");
-    if (request.primitiveId) primitiveId_ = buffer.requireUInt("primitiveId");
+    if (request.objectId) objectId_ = buffer.writeUInt("objectId");
+    if (request.primitiveId) primitiveId_ = buffer.writeUInt("primitiveId");
 }
 
 }  // namespace darkroom::embree

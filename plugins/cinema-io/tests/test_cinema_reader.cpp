@@ -74,8 +74,8 @@ TEST(CinemaReader, ReadsBackWhatTheWriterWroteExactly) {
     const auto path = dir.file("w.cdb");
     auto image = makeCpuBuffer(8, 6, {{"Z", ChannelType::Float32}, {"id", ChannelType::UInt32}});
     for (std::size_t i = 0; i < image->pixelCount(); ++i) {
-        image->hostFloat("Z")[i] = float(i) * 0.25f;
-        image->hostUInt("id")[i] = std::uint32_t(i * 3);
+        image->writeFloat("Z")[i] = float(i) * 0.25f;
+        image->writeUInt("id")[i] = std::uint32_t(i * 3);
     }
     Camera cam;
     cam.width = 8;

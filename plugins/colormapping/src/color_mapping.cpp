@@ -74,10 +74,10 @@ void ColorMapping::execute(Context& ctx) {
     auto out = ctx.allocate(w, h, {"R", "G", "B", "A"}, Fill::None);
     if (depth) out->setPlane({"Z"}, in->plane("Z"));
     out->metadata() = in->metadata();
-    float* R = out->hostFloat("R");
-    float* G = out->hostFloat("G");
-    float* B = out->hostFloat("B");
-    float* A = out->hostFloat("A");
+    float* R = out->writeFloat("R");
+    float* G = out->writeFloat("G");
+    float* B = out->writeFloat("B");
+    float* A = out->writeFloat("A");
     const bool haveRange = !std::isnan(low);
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)

@@ -113,10 +113,10 @@ TEST(ColorMapping, ChoosesChannelsAndMapsUInt32) {
     auto img = makeCpuBuffer(3, 1, {{"Z", ChannelType::Float32}, {"id", ChannelType::UInt32},
                                     {"a", ChannelType::Float32}, {"b", ChannelType::Float32}});
     for (int x = 0; x < 3; ++x) {
-        img->hostFloat("Z")[x] = 1;
-        img->hostUInt("id")[x] = std::uint32_t(x * 10);
-        img->hostFloat("a")[x] = float(x);
-        img->hostFloat("b")[x] = float(2 - x);
+        img->writeFloat("Z")[x] = 1;
+        img->writeUInt("id")[x] = std::uint32_t(x * 10);
+        img->writeFloat("a")[x] = float(x);
+        img->writeFloat("b")[x] = float(2 - x);
     }
     const auto m = loadColorMap("viridis");
     // Default: the first float channel that is not Z or A -> "a".

@@ -99,9 +99,9 @@ void Compositing::execute(Context& ctx) {
             s.uints.push_back(c.type == ChannelType::UInt32 ? b->hostUInt(c.name) : nullptr);
         }
         if (c.type == ChannelType::Float32)
-            s.outFloat = out->hostFloat(c.name);
+            s.outFloat = out->writeFloat(c.name);
         else
-            s.outUInt = out->hostUInt(c.name);
+            s.outUInt = out->writeUInt(c.name);
         sources.push_back(std::move(s));
     }
 

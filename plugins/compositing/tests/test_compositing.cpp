@@ -99,14 +99,14 @@ TEST(Compositing, BackgroundNeverWinsWhateverItsEncoding) {
 TEST(Compositing, OutputHasTheUnionOfChannelsWithNoDataWhereTheWinnerLacksOne) {
     auto a = makeCpuBuffer(2, 1, {{"Z"}, {"a"}, {"R"}});
     auto b = makeCpuBuffer(2, 1, {{"Z"}, {"b"}, {"id", ChannelType::UInt32}});
-    a->hostFloat("Z")[0] = 1;
-    a->hostFloat("Z")[1] = 3;
-    b->hostFloat("Z")[0] = 2;
-    b->hostFloat("Z")[1] = 2;
-    a->hostFloat("a")[0] = a->hostFloat("a")[1] = 0.5f;
-    a->hostFloat("R")[0] = a->hostFloat("R")[1] = 0.25f;
-    b->hostFloat("b")[0] = b->hostFloat("b")[1] = 7;
-    b->hostUInt("id")[0] = b->hostUInt("id")[1] = 42;
+    a->writeFloat("Z")[0] = 1;
+    a->writeFloat("Z")[1] = 3;
+    b->writeFloat("Z")[0] = 2;
+    b->writeFloat("Z")[1] = 2;
+    a->writeFloat("a")[0] = a->writeFloat("a")[1] = 0.5f;
+    a->writeFloat("R")[0] = a->writeFloat("R")[1] = 0.25f;
+    b->writeFloat("b")[0] = b->writeFloat("b")[1] = 7;
+    b->writeUInt("id")[0] = b->writeUInt("id")[1] = 42;
     const BufferPtr out = compositeImage({a, b});
     EXPECT_EQ(out->channelNames(), (std::vector<std::string>{"Z", "a", "R", "b", "id"}));
     EXPECT_EQ(out->channelType("id"), ChannelType::UInt32);
@@ -124,9 +124,9 @@ TEST(Compositing, OutputHasTheUnionOfChannelsWithNoDataWhereTheWinnerLacksOne) {
 
 TEST(Compositing, AllBackgroundPixelIsTransparentBlackWithNoIdAndNoData) {
     auto a = makeCpuBuffer(1, 1, {{"Z"}, {"R"}, {"G"}, {"B"}, {"A"}, {"value"}, {"objectId", ChannelType::UInt32}});
-    a->hostFloat("Z")[0] = kInf;
-    a->hostFloat("R")[0] = a->hostFloat("G")[0] = a->hostFloat("B")[0] = a->hostFloat("A")[0] = 0.7f;
-    a->hostUInt("objectId")[0] = 3;
+    a->writeFloat("Z")[0] = kInf;
+    a->writeFloat("R")[0] = a->writeFloat("G")[0] = a->writeFloat("B")[0] = a->writeFloat("A")[0] = 0.7f;
+    a->writeUInt("objectId")[0] = 3;
     const BufferPtr out = compositeImage({a, a});
     EXPECT_EQ(out->hostFloat("Z")[0], kInf);
     for (const char* c : {"R", "G", "B", "A"}) EXPECT_EQ(out->hostFloat(c)[0], 0.0f) << c;

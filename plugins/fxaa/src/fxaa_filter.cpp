@@ -94,8 +94,8 @@ void Fxaa::execute(Context& ctx) {
     std::vector<ChannelDesc> fresh{"R", "G", "B"};
     if (a) fresh.push_back("A");
     auto out = ctx.derive(in, fresh, Fill::None);
-    const ColourPlanes planes{r, g, b, a, out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B"),
-                              a ? out->hostFloat("A") : nullptr};
+    const ColourPlanes planes{r, g, b, a, out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B"),
+                              a ? out->writeFloat("A") : nullptr};
     const fxaa::LumaPlane plane{luma.get(), w, h};
 
     // Pass 2: each pixel reads the luma around it and writes only itself, so

@@ -150,10 +150,10 @@ TEST(FxaaRobustness, OtherChannelsPassThroughBitForBit) {
     auto img = makeCpuBuffer(9, 8, {{"Z"}, {"R"}, {"G"}, {"B"}, {"value"}, {"objectId", ChannelType::UInt32}});
     for (std::size_t i = 0; i < img->pixelCount(); ++i) {
         const int x = int(i % 9), y = int(i / 9);
-        img->hostFloat("Z")[i] = x == 0 ? kInf : 1.0f + 0.1f * float(y);
-        img->hostFloat("value")[i] = x == 4 ? kNaN : float(i);
-        img->hostUInt("objectId")[i] = std::uint32_t(i * 7u);
-        for (const char* c : {"R", "G", "B"}) img->hostFloat(c)[i] = busy(x, y);
+        img->writeFloat("Z")[i] = x == 0 ? kInf : 1.0f + 0.1f * float(y);
+        img->writeFloat("value")[i] = x == 4 ? kNaN : float(i);
+        img->writeUInt("objectId")[i] = std::uint32_t(i * 7u);
+        for (const char* c : {"R", "G", "B"}) img->writeFloat(c)[i] = busy(x, y);
     }
     const BufferPtr out = runFxaa(img);
     EXPECT_EQ(out->channels(), img->channels());

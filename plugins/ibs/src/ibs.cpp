@@ -84,10 +84,10 @@ void Ibs::execute(Context& ctx) {
 
     // Every fresh plane is written below.
     auto out = ctx.derive(in, fresh, Fill::None);
-    std::copy(s.begin(), s.end(), out->requireFloat("Silhouette"));
+    std::copy(s.begin(), s.end(), out->writeFloat("Silhouette"));
     if (colour) {
-        float* rgb[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
-        float* alpha = alphaIn ? out->hostFloat("A") : nullptr;
+        float* rgb[3] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B")};
+        float* alpha = alphaIn ? out->writeFloat("A") : nullptr;
         const float c[3] = {color.r, color.g, color.b};
         ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
             for (std::size_t i = std::size_t(y0) * w; i < std::size_t(y1) * w; ++i) {

@@ -27,7 +27,7 @@ void expectInRange(const Buffer& b) {
 }
 
 TEST(Ibs, TiltedPlaneHasNoSilhouetteAndKeepsItsColour) {
-    const Plane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
+    const ScenePlane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
     for (const bool perspective : {true, false}) {
         const Camera cam = viewCamera(32, 24, perspective);
         const BufferPtr img = depthImage(cam, [&](int x, int y) { return planeDepth(cam, plane, x, y); }, {"R", "G", "B", "A"});
@@ -77,8 +77,8 @@ TEST(Ibs, ObjectIdEdgeWithoutDepthEdgeIsDetected) {
     img->metadata().camera = cam;
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 10; ++x) {
-            img->hostFloat("Z")[std::size_t(y) * 10 + x] = 4.0f;
-            img->hostUInt("objectId")[std::size_t(y) * 10 + x] = x < 6 ? 1u : 2u;
+            img->writeFloat("Z")[std::size_t(y) * 10 + x] = 4.0f;
+            img->writeUInt("objectId")[std::size_t(y) * 10 + x] = x < 6 ? 1u : 2u;
         }
     const BufferPtr out = runPass("IBS", img);
     for (int y = 0; y < 4; ++y)
@@ -105,7 +105,7 @@ TEST(Ibs, FarSideOnBackgroundRaisesAlphaNearSideLeavesBackgroundAlone) {
     auto img = depthImage(cam, [](int x, int y) { return x >= 4 && x < 8 && y >= 4 && y < 8 ? 3.0 : double(kInf); },
                           {"R", "G", "B", "A"});
     for (std::size_t i = 0; i < img->pixelCount(); ++i)
-        if (std::isinf(img->hostFloat("Z")[i])) img->hostFloat("A")[i] = 0.0f;
+        if (std::isinf(img->hostFloat("Z")[i])) img->writeFloat("A")[i] = 0.0f;
     const BufferPtr near = runPass("IBS", img);
     const BufferPtr far = runPass("IBS", img, {{"side", {Value("far")}}, {"color", {Value(Color{0, 0, 1, 1})}}});
     for (int y = 0; y < 12; ++y)
@@ -126,7 +126,7 @@ TEST(Ibs, FarSideOnBackgroundRaisesAlphaNearSideLeavesBackgroundAlone) {
 TEST(Ibs, HeadlightLightingMatchesTheAnalyticCosine) {
     // Orthographic view of a tilted plane: N.V is the same everywhere.
     const Camera cam = viewCamera(16, 12, false);
-    const Plane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
+    const ScenePlane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
     const double cosine = -dot(facing(cam, plane), normalize(cam.forward));
     const double ambient = 0.3, luminance = 1.5;
     const double want = 0.5 * luminance * (ambient + (1 - ambient) * cosine);
@@ -140,9 +140,9 @@ TEST(Ibs, HeadlightLightingMatchesTheAnalyticCosine) {
     // Captured normals give the same light.
     auto withN = depthImage(cam, [&](int x, int y) { return planeDepth(cam, plane, x, y); }, {"R", "G", "B", "N.x", "N.y", "N.z"});
     const Vec3 n = facing(cam, plane);
-    std::fill_n(withN->hostFloat("N.x"), withN->pixelCount(), float(n.x));
-    std::fill_n(withN->hostFloat("N.y"), withN->pixelCount(), float(n.y));
-    std::fill_n(withN->hostFloat("N.z"), withN->pixelCount(), float(n.z));
+    std::fill_n(withN->writeFloat("N.x"), withN->pixelCount(), float(n.x));
+    std::fill_n(withN->writeFloat("N.y"), withN->pixelCount(), float(n.y));
+    std::fill_n(withN->writeFloat("N.z"), withN->pixelCount(), float(n.z));
     const BufferPtr out2 = runPass("IBS", withN, lit);
     for (std::size_t i = 0; i < out2->pixelCount(); ++i) EXPECT_NEAR(out2->hostFloat("B")[i], want, 1e-5) << i;
 }

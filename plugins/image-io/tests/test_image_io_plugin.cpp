@@ -66,7 +66,7 @@ TEST(ImageIoPlugin, WriterCreatesTheFolderAndReaderReadsBackExactly) {
     // Apart from the provenance the reader adds, the buffer is the one written.
     auto copy = makeCpuBuffer(img->width(), img->height(), img->channels());
     for (const auto& c : img->channels())
-        std::copy_n(img->hostFloat(c.name), img->pixelCount(), copy->hostFloat(c.name));
+        std::copy_n(img->hostFloat(c.name), img->pixelCount(), copy->writeFloat(c.name));
     copy->metadata() = img->metadata();
     copy->metadata().attributes.erase("source");
     EXPECT_TRUE(identical(*b, *copy));

@@ -25,8 +25,8 @@ void Background::execute(Context& ctx) {
 
     // New colour and alpha, every pixel written; the rest is shared.
     auto out = ctx.derive(in, {"R", "G", "B", "A"}, Fill::None);
-    float* o[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
-    float* oa = out->hostFloat("A");
+    float* o[3] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B")};
+    float* oa = out->writeFloat("A");
     const int w = in->width(), h = in->height();
 
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {

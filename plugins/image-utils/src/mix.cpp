@@ -53,8 +53,8 @@ void Mix::execute(Context& ctx) {
     std::vector<ChannelDesc> fresh{"R", "G", "B"};
     if (base.a) fresh.push_back("A");
     auto out = ctx.derive(in, fresh, Fill::None);
-    float* o[3] = {out->hostFloat("R"), out->hostFloat("G"), out->hostFloat("B")};
-    float* oa = out->hostFloat("A");
+    float* o[3] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B")};
+    float* oa = base.a ? out->writeFloat("A") : nullptr;
     const int w = in->width();
     const float keep = 1.0f - amount;
     const bool multiply = mode == Mode::Multiply, blend = mode == Mode::Blend, add = mode == Mode::Add;

@@ -95,17 +95,17 @@ void Resize::execute(Context& ctx) {
         if (c.type == ChannelType::UInt32 || c.name == "Z") {
             if (c.type == ChannelType::UInt32) {
                 const std::uint32_t* s = in->hostUInt(c.name);
-                std::uint32_t* d = out->hostUInt(c.name);
+                std::uint32_t* d = out->writeUInt(c.name);
                 for (std::size_t i = 0; i < outN; ++i) d[i] = s[source[i]];
             } else {
                 const float* s = in->hostFloat(c.name);
-                float* d = out->hostFloat(c.name);
+                float* d = out->writeFloat(c.name);
                 for (std::size_t i = 0; i < outN; ++i) d[i] = s[source[i]];
             }
             continue;
         }
         const float* s = in->hostFloat(c.name);
-        float* d = out->hostFloat(c.name);
+        float* d = out->writeFloat(c.name);
         // Straight-alpha colour is averaged weighted by alpha (what a
         // premultiplied average divided by the mean alpha gives), so edges
         // against transparent background do not darken.

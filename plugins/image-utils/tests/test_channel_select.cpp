@@ -12,10 +12,10 @@ namespace {
 std::shared_ptr<WritableBuffer> image() {
     auto b = makeCpuBuffer(2, 1, {{"Z"}, {"value"}, {"B"}, {"objectId", ChannelType::UInt32}});
     for (int x = 0; x < 2; ++x) {
-        b->hostFloat("Z")[x] = 1.0f + x;
-        b->hostFloat("value")[x] = 10.0f + x;
-        b->hostFloat("B")[x] = 0.5f;
-        b->hostUInt("objectId")[x] = 7u + x;
+        b->writeFloat("Z")[x] = 1.0f + x;
+        b->writeFloat("value")[x] = 10.0f + x;
+        b->writeFloat("B")[x] = 0.5f;
+        b->writeUInt("objectId")[x] = 7u + x;
     }
     Camera c;
     c.width = 2;

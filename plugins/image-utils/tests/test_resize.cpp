@@ -66,8 +66,8 @@ TEST(Resize, DepthAndIdsComeFromTheNearestSurfaceInTheFootprint) {
     auto in = makeCpuBuffer(4, 2, {{"Z"}, {"objectId", ChannelType::UInt32}});
     const float z[8] = {kInf, 5, 2, 2, kInf, 3, kInf, kNaN};
     for (int i = 0; i < 8; ++i) {
-        in->hostFloat("Z")[i] = z[i];
-        in->hostUInt("objectId")[i] = std::uint32_t(i);
+        in->writeFloat("Z")[i] = z[i];
+        in->writeUInt("objectId")[i] = std::uint32_t(i);
     }
     const BufferPtr out = resize(in, {{"width", {Value(2)}}, {"height", {Value(1)}}});
     EXPECT_EQ(out->hostFloat("Z")[0], 3.0f);  // never the average of 5, 3 and inf
@@ -78,9 +78,9 @@ TEST(Resize, DepthAndIdsComeFromTheNearestSurfaceInTheFootprint) {
 
 TEST(Resize, OnePixelInputFillsAnyOutput) {
     auto in = makeCpuBuffer(1, 1, {{"Z"}, {"R"}, {"id", ChannelType::UInt32}});
-    in->hostFloat("Z")[0] = 4;
-    in->hostFloat("R")[0] = 0.3f;
-    in->hostUInt("id")[0] = 9;
+    in->writeFloat("Z")[0] = 4;
+    in->writeFloat("R")[0] = 0.3f;
+    in->writeUInt("id")[0] = 9;
     for (const char* f : {"box", "bilinear", "nearest"}) {
         const BufferPtr out = resize(in, {{"width", {Value(3)}}, {"height", {Value(2)}}, {"filter", {Value(f)}}});
         ASSERT_EQ(out->pixelCount(), 6u);

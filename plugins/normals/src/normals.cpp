@@ -18,9 +18,9 @@ void Normals::execute(Context& ctx) {
     dst.viewZTowardsViewer = true;  // Nv is a normal map in the OpenGL convention
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k) {
-        dst.view[k] = out->requireFloat(std::string("Nv.") + axes[k]);
-        dst.position[k] = out->requireFloat(std::string("P.") + axes[k]);
-        if (!keep) dst.world[k] = out->requireFloat(std::string("N.") + axes[k]);
+        dst.view[k] = out->writeFloat(std::string("Nv.") + axes[k]);
+        dst.position[k] = out->writeFloat(std::string("P.") + axes[k]);
+        if (!keep) dst.world[k] = out->writeFloat(std::string("N.") + axes[k]);
     }
     reconstructNormals(ctx, depth, in->width(), in->height(), camera, ctx.get(method_), dst);
     if (keep) {

@@ -31,13 +31,13 @@ inline Camera viewCamera(int w, int h, bool perspective) {
     return c;
 }
 
-struct Plane {
+struct ScenePlane {
     Vec3 point;
     Vec3 normal;  // unit
 };
 
 // Planar depth at the centre of pixel (x, y) of the plane; +inf when missed.
-inline double planeDepth(const Camera& c, const Plane& p, int x, int y) {
+inline double planeDepth(const Camera& c, const ScenePlane& p, int x, int y) {
     Vec3 o, d;
     c.ray(x + 0.5, y + 0.5, o, d);
     const double t = dot(p.point - o, p.normal) / dot(d, p.normal);
@@ -62,7 +62,7 @@ inline std::shared_ptr<WritableBuffer> depthImage(const Camera& c,
 }
 
 // The facing-the-camera orientation of a plane normal.
-inline Vec3 facing(const Camera& c, const Plane& p) {
+inline Vec3 facing(const Camera& c, const ScenePlane& p) {
     return dot(p.normal, c.forward) < 0 ? p.normal : -p.normal;
 }
 

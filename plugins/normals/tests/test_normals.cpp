@@ -14,7 +14,7 @@ namespace {
 
 const float kInf = std::numeric_limits<float>::infinity();
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
-const Plane kTilted{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
+const ScenePlane kTilted{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
 
 void expectVecNear(const Vec3& got, const Vec3& want, double tol, const std::string& what) {
     EXPECT_NEAR(got.x, want.x, tol) << what;
@@ -56,7 +56,7 @@ INSTANTIATE_TEST_SUITE_P(AllMethodsAndProjections, PlaneNormals,
 // (or row) `split`: every pixel lies on one plane, so the true normal is known
 // everywhere, including next to the discontinuity.
 BufferPtr stepImage(const Camera& cam, bool alongX, int split) {
-    const Plane far{{0, 0, -1.5}, kTilted.normal};
+    const ScenePlane far{{0, 0, -1.5}, kTilted.normal};
     return depthImage(cam, [&, alongX, split](int x, int y) {
         return planeDepth(cam, (alongX ? x : y) < split ? kTilted : far, x, y);
     });
@@ -94,9 +94,9 @@ TEST(Normals, PassesEveryChannelThroughAndKeepsCapturedNormalsUnlessReplaced) {
     const Camera cam = viewCamera(8, 6, true);
     auto img = depthImage(cam, [&](int x, int y) { return planeDepth(cam, kTilted, x, y); }, {"R", "N.x", "N.y", "N.z"});
     // Deliberately wrong "captured" normals (0, 0, 1) to tell them apart.
-    std::fill_n(img->hostFloat("N.x"), img->pixelCount(), 0.0f);
-    std::fill_n(img->hostFloat("N.y"), img->pixelCount(), 0.0f);
-    std::fill_n(img->hostFloat("N.z"), img->pixelCount(), 1.0f);
+    std::fill_n(img->writeFloat("N.x"), img->pixelCount(), 0.0f);
+    std::fill_n(img->writeFloat("N.y"), img->pixelCount(), 0.0f);
+    std::fill_n(img->writeFloat("N.z"), img->pixelCount(), 1.0f);
     const BufferPtr kept = runPass("Normals", img);
     EXPECT_EQ(kept->metadata(), img->metadata());
     for (std::size_t i = 0; i < img->pixelCount(); ++i) {
@@ -115,8 +115,8 @@ TEST(Normals, UInt32ChannelsPassThrough) {
     auto img = makeCpuBuffer(4, 3, ch);
     img->metadata().camera = cam;
     for (std::size_t i = 0; i < 12; ++i) {
-        img->hostFloat("Z")[i] = 4.0f;
-        img->hostUInt("objectId")[i] = std::uint32_t(i * 7);
+        img->writeFloat("Z")[i] = 4.0f;
+        img->writeUInt("objectId")[i] = std::uint32_t(i * 7);
     }
     const BufferPtr out = runPass("Normals", img);
     for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(out->hostUInt("objectId")[i], i * 7);

@@ -44,7 +44,7 @@ void Ssao::execute(Context& ctx) {
 
     // Every pixel of AO is written below (1 where there is no surface).
     auto out = ctx.derive(in, {"AO"}, Fill::None);
-    float* ao = out->requireFloat("AO");
+    float* ao = out->writeFloat("AO");
     if (in->pixelCount() == 0) {
         ctx.set(result_, out);
         return;

@@ -26,7 +26,7 @@ void Ssdd::execute(Context& ctx) {
     if (apply) fresh.insert(fresh.end(), {"R", "G", "B"});
     // Every fresh plane is written below.
     auto out = ctx.derive(in, fresh, Fill::None);
-    float* factor = out->requireFloat("SSDD");
+    float* factor = out->writeFloat("SSDD");
     const std::size_t n = in->pixelCount();
 
     // Below a tenth of a pixel the blur is the identity: dD = 0.
@@ -52,7 +52,7 @@ void Ssdd::execute(Context& ctx) {
     if (apply) {
         for (const char* c : {"R", "G", "B"}) {
             const float* s = in->hostFloat(c);
-            float* d = out->hostFloat(c);
+            float* d = out->writeFloat(c);
             ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
                 for (std::size_t i = std::size_t(y0) * w; i < std::size_t(y1) * w; ++i) d[i] = s[i] * factor[i];
             });

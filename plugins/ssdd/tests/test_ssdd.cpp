@@ -30,7 +30,7 @@ void expectInRange(const Buffer& b) {
 }
 
 TEST(Ssdd, TiltedPlaneIsNotDarkenedAwayFromTheBorder) {
-    const Plane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
+    const ScenePlane plane{{0, 0, 0}, normalize(Vec3{0.3, -0.2, 1.0})};
     for (const bool perspective : {true, false}) {
         const Camera cam = viewCamera(64, 48, perspective);
         const BufferPtr out = runPass("SSDD", depthImage(cam, [&](int x, int y) { return planeDepth(cam, plane, x, y); }),

@@ -61,10 +61,10 @@ void SSDoF::execute(Context& ctx) {
     std::vector<ChannelDesc> fresh{"R", "G", "B"};
     if (A) fresh.push_back("A");
     auto out = ctx.derive(in, fresh, Fill::None);
-    float* oR = out->hostFloat("R");
-    float* oG = out->hostFloat("G");
-    float* oB = out->hostFloat("B");
-    float* oA = A ? out->hostFloat("A") : nullptr;
+    float* oR = out->writeFloat("R");
+    float* oG = out->writeFloat("G");
+    float* oB = out->writeFloat("B");
+    float* oA = A ? out->writeFloat("A") : nullptr;
     ctx.parallelFor(0, height, 16, [&](int y0, int y1) {
         for (std::size_t i = std::size_t(y0) * width; i < std::size_t(y1) * width; ++i) {
             if (g.unchanged[i]) {  // in focus, nothing bleeds in: bit-identical

@@ -172,7 +172,7 @@ TEST(SSDoF, NearSquareBleedsOverTheSharpPlaneBehindIt) {
     const BufferPtr in = squareOverPlane(1.0f, 2.0f);
     for (const char* m : {"disc", "hexagon"}) {
         const BufferPtr out = dof(in, lens(1.0, 2.0, m));
-        // Plane pixels more than 8 px (+1 rounding) from the square keep their bits.
+        // ScenePlane pixels more than 8 px (+1 rounding) from the square keep their bits.
         for (int y = 0; y < 64; ++y)
             for (int x = 0; x < 64; ++x) {
                 const int dx = std::max({24 - x, 0, x - 39}), dy = std::max({24 - y, 0, y - 39});
@@ -200,7 +200,7 @@ TEST(SSDoF, NearSquareBleedsOverTheSharpPlaneBehindIt) {
 }
 
 TEST(SSDoF, FarPlaneNeverBleedsOverANearerSharpSquare) {
-    // Plane at infinity (far-field CoC 16 px), square in focus at 2.
+    // ScenePlane at infinity (far-field CoC 16 px), square in focus at 2.
     const BufferPtr in = scene(64, 64, [](int x, int y, int c) -> float {
         const bool square = x >= 24 && x < 40 && y >= 24 && y < 40;
         if (c == 4) return square ? 2.0f : kInf;

@@ -19,7 +19,7 @@ public:
         auto out = ctx.derive(in, {"R", "G", "B"}, darkroom::Fill::None);
         for (const char* c : {"R", "G", "B"}) {
             const float* s = in->requireFloat(c);
-            float* d = out->requireFloat(c);
+            float* d = out->writeFloat(c);
             ctx.parallelFor(0, in->height(), 16, [&](int y0, int y1) {
                 for (std::size_t i = std::size_t(y0) * in->width(); i < std::size_t(y1) * in->width(); ++i)
                     d[i] = s[i] + a * (1.0f - 2.0f * s[i]);

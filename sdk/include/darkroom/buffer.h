@@ -128,29 +128,25 @@ public:
 
 // A buffer being filled by the filter that allocated or derived it. Once
 // published with Context::setOutput it is only seen through shared_ptr<const Buffer>.
+//
+// Reading goes through the Buffer interface, as for any buffer (also for the
+// channels shared with an input); writing asks for writeFloat/writeUInt,
+// which only a plane this buffer was given fresh allows.
 class DARKROOM_API WritableBuffer : public Buffer {
 public:
-    // Writable pixels of a channel this buffer allocated; nullptr when the
-    // channel is absent, has another type, or is a plane shared with another
-    // buffer (list it among derive()'s fresh channels to replace it).
-    virtual float* hostFloat(std::string_view channel) = 0;
-    virtual std::uint32_t* hostUInt(std::string_view channel) = 0;
+    // The pixels of a channel this buffer allocated, to fill. Throws
+    // darkroom::Error saying why not when the channel is absent, has another
+    // type, or is a plane shared with another buffer (list it among derive()'s
+    // fresh channels to replace it).
+    virtual float* writeFloat(std::string_view channel) = 0;
+    virtual std::uint32_t* writeUInt(std::string_view channel) = 0;
     virtual BufferMetadata& metadata() = 0;
+    using Buffer::metadata;
     // Makes `plane` (width * height values) the channel `channel.name`:
     // replaces a channel of that name in place, else appends it.
     virtual void setPlane(const ChannelDesc& channel, PlanePtr plane) = 0;
     // Removes a channel; no effect when absent.
     virtual void removeChannel(std::string_view name) = 0;
-    using Buffer::hostFloat;
-    using Buffer::hostUInt;
-    using Buffer::metadata;
-
-    // Like hostFloat, but throws darkroom::Error saying why there is no
-    // writable plane (absent, other type, or shared).
-    float* requireFloat(std::string_view channel);
-    std::uint32_t* requireUInt(std::string_view channel);
-    using Buffer::requireFloat;
-    using Buffer::requireUInt;
 };
 
 using BufferPtr = std::shared_ptr<const Buffer>;

@@ -17,6 +17,26 @@ enum class ThreadSafety : std::uint8_t {
 
 // A shading pass or any other node. To add one: inherit, declare ports,
 // implement execute — nothing else.
+//
+// The caching contract. The host keys a node's cached result on exactly what
+// execute() reads, which it records as the filter runs:
+//   - its value inputs (a Path input, and a ColorMap input naming a file,
+//     also by the file's modification time and size);
+//   - of each image input, the planes of the channels asked for through
+//     hostFloat/hostUInt/requireFloat/requireUInt/plane, whether the channel
+//     list (channels(), hasChannel, channelType...) or the metadata was looked
+//     at, and always the size;
+//   - every file named with Context::readsFile.
+// Reading nothing else is the contract: the outputs must be a function of
+// those, computed afresh by each execute() (keep no results between calls;
+// caches of parsed files are fine when keyed by the file's stamp). A filter
+// that cannot say what it reads looks at it through these calls anyway, and is
+// keyed conservatively on all of it.
+//
+// Channels a pass merely passes on are not reads: with Context::derive (or by
+// publishing an input buffer itself) the host knows which planes came from
+// the input, and when only those change upstream it re-assembles the output
+// around the new planes without calling execute().
 class DARKROOM_API Filter {
 public:
     virtual ~Filter();
@@ -26,7 +46,7 @@ public:
 
     // Reads inputs from the context, allocates and publishes every output.
     // Throwing darkroom::Error (or any std::exception) marks this node failed
-    // with that message; the host names the node.
+    // with that message; the host names the node (so the message should not).
     virtual void execute(Context& ctx) = 0;
 
     virtual ThreadSafety threadSafety() const { return ThreadSafety::InstanceSafe; }

@@ -10,4 +10,4 @@
 #define DARKROOM_ABI_VERSION 3u
 
 // Human-facing SDK release; informative only, compatibility is the ABI version.
-#define DARKROOM_SDK_VERSION "0.2.0"
+#define DARKROOM_SDK_VERSION "0.3.0"

@@ -26,9 +26,9 @@ inline std::shared_ptr<WritableBuffer> gridImage(const CinemaParameters& p, int 
                            {{"Z", ChannelType::Float32},
                             {"Elevation", ChannelType::Float32},
                             {"ObjectId", ChannelType::UInt32}});
-    float* z = b->hostFloat("Z");
-    float* e = b->hostFloat("Elevation");
-    std::uint32_t* id = b->hostUInt("ObjectId");
+    float* z = b->writeFloat("Z");
+    float* e = b->writeFloat("Elevation");
+    std::uint32_t* id = b->writeUInt("ObjectId");
     for (int y = 0; y < b->height(); ++y)
         for (int x = 0; x < b->width(); ++x) {
             const std::size_t i = std::size_t(y) * b->width() + x;

@@ -4,8 +4,10 @@
 #include <darkroom/darkroom.h>
 #include <darkroom/framework/registry.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 
 namespace testfilters {
 
@@ -25,7 +27,7 @@ public:
     void execute(darkroom::Context& ctx) override {
         const int w = int(ctx.getInt("width")), h = int(ctx.getInt("height"));
         auto out = ctx.allocate(w, h, {{"value", darkroom::ChannelType::Float32}});
-        float* v = out->hostFloat("value");
+        float* v = out->writeFloat("value");
         for (std::size_t i = 0; i < out->pixelCount(); ++i) v[i] = float(ctx.getFloat("value"));
         ctx.setOutput("image", darkroom::BufferPtr(out));
     }
@@ -47,7 +49,7 @@ public:
         auto out = ctx.allocate(a->width(), a->height(), {{"value", darkroom::ChannelType::Float32}});
         const float* pa = a->requireFloat("value");
         const float* pb = b->requireFloat("value");
-        float* o = out->hostFloat("value");
+        float* o = out->writeFloat("value");
         const float off = float(ctx.getFloat("offset"));
         for (std::size_t i = 0; i < out->pixelCount(); ++i) o[i] = pa[i] + pb[i] + off;
         ctx.setOutput("image", darkroom::BufferPtr(out));
@@ -67,7 +69,7 @@ public:
         auto in = ctx.images("images");
         if (in.empty()) throw darkroom::Error("nothing to sum");
         auto out = ctx.allocate(in[0]->width(), in[0]->height(), {{"value", darkroom::ChannelType::Float32}});
-        float* o = out->hostFloat("value");
+        float* o = out->writeFloat("value");
         for (std::size_t k = 0; k < in.size(); ++k) {
             const float* p = in[k]->requireFloat("value");
             for (std::size_t i = 0; i < out->pixelCount(); ++i) o[i] += float(k + 1) * p[i];
@@ -90,7 +92,7 @@ public:
         auto in = ctx.requireImage("image");
         auto out = ctx.allocate(in->width(), in->height(), {{"value", darkroom::ChannelType::Float32}});
         const float* s = in->requireFloat("value");
-        float* d = out->hostFloat("value");
+        float* d = out->writeFloat("value");
         const std::uint32_t seed = std::uint32_t(ctx.getInt("seed"));
         const int w = in->width();
         ctx.parallelFor(0, in->height(), 1, [&](int y0, int y1) {
@@ -128,7 +130,9 @@ public:
         return p;
     }
     void execute(darkroom::Context& ctx) override {
-        (void)ctx.requireImage("image");
+        // Reads every channel, as a writer does.
+        auto in = ctx.requireImage("image");
+        for (const auto& c : in->channels()) (void)in->plane(c.name);
         ++g_sinkCalls;
     }
 };
@@ -144,7 +148,130 @@ public:
     void execute(darkroom::Context&) override { throw std::runtime_error("deliberate failure"); }
 };
 
+// Two planes "a" and "b", every pixel = the parameter of the same name.
+class TwoPlanes final : public darkroom::Filter {
+    darkroom::FloatIn a_{"a", 1.0, -1e9, 1e9, "Value of plane a"};
+    darkroom::FloatIn b_{"b", 2.0, -1e9, 1e9, "Value of plane b"};
+    darkroom::ImageOut out_{"image", "Planes a and b", {"a", "b"}};
+
+public:
+    darkroom::PortList ports() const override { return {a_, b_, out_}; }
+    void execute(darkroom::Context& ctx) override {
+        auto out = ctx.allocate(4, 3, {"a", "b"}, darkroom::Fill::None);
+        std::fill_n(out->writeFloat("a"), out->pixelCount(), float(ctx.get(a_)));
+        std::fill_n(out->writeFloat("b"), out->pixelCount(), float(ctx.get(b_)));
+        ctx.set(out_, out);
+    }
+};
+
+// Adds plane "c" = 2a, reading only "a"; everything else is passed on.
+class DoubleA final : public darkroom::Filter {
+    darkroom::ImageIn in_{"image", "Needs a", {"a"}};
+    darkroom::ImageOut out_{"image", "Input plus c = 2a", {"c"}};
+
+public:
+    darkroom::PortList ports() const override { return {in_, out_}; }
+    void execute(darkroom::Context& ctx) override {
+        auto in = ctx.get(in_);
+        auto out = ctx.derive(in, {"c"}, darkroom::Fill::None);
+        const float* a = in->requireFloat("a");
+        float* c = out->writeFloat("c");
+        for (std::size_t i = 0; i < in->pixelCount(); ++i) c[i] = 2 * a[i];
+        ctx.set(out_, out);
+    }
+};
+
+// Reads a and b but writes plane "c" = a: when only b changes it re-runs and
+// makes a bit-identical plane.
+class CopyAReadingB final : public darkroom::Filter {
+    darkroom::ImageIn in_{"image", "Needs a and b", {"a", "b"}};
+    darkroom::ImageOut out_{"image", "c = a (b is read and ignored)", {"c"}};
+
+public:
+    darkroom::PortList ports() const override { return {in_, out_}; }
+    void execute(darkroom::Context& ctx) override {
+        auto in = ctx.get(in_);
+        const float* a = in->requireFloat("a");
+        (void)in->requireFloat("b");
+        auto out = ctx.allocate(in->width(), in->height(), {"c"}, darkroom::Fill::None);
+        std::copy_n(a, in->pixelCount(), out->writeFloat("c"));
+        ctx.set(out_, out);
+    }
+};
+
+// Adds plane "d" = c + 1, reading only "c".
+class IncrementC final : public darkroom::Filter {
+    darkroom::ImageIn in_{"image", "Needs c", {"c"}};
+    darkroom::ImageOut out_{"image", "Input plus d = c + 1", {"d"}};
+
+public:
+    darkroom::PortList ports() const override { return {in_, out_}; }
+    void execute(darkroom::Context& ctx) override {
+        auto in = ctx.get(in_);
+        auto out = ctx.derive(in, {"d"}, darkroom::Fill::None);
+        const float* c = in->requireFloat("c");
+        float* d = out->writeFloat("d");
+        for (std::size_t i = 0; i < in->pixelCount(); ++i) d[i] = c[i] + 1;
+        ctx.set(out_, out);
+    }
+};
+
+// Publishes its input itself (a pass that changes nothing).
+class Forward final : public darkroom::Filter {
+    darkroom::ImageIn in_{"image", "Anything"};
+    darkroom::ImageOut out_{"image", "The input, the same pointer"};
+
+public:
+    darkroom::PortList ports() const override { return {in_, out_}; }
+    void execute(darkroom::Context& ctx) override { ctx.set(out_, ctx.get(in_)); }
+};
+
+// A 1x1 image whose value is the number written in a text file.
+class FileNumber final : public darkroom::Filter {
+    darkroom::PathIn path_{"path", "", "A text file holding one number"};
+    darkroom::ImageOut out_{"image", "One pixel", {"value"}};
+
+public:
+    darkroom::PortList ports() const override { return {path_, out_}; }
+    void execute(darkroom::Context& ctx) override {
+        std::FILE* f = std::fopen(ctx.get(path_).c_str(), "r");
+        if (!f) throw darkroom::Error("cannot open " + ctx.get(path_));
+        double v = 0;
+        if (std::fscanf(f, "%lf", &v) != 1) v = -1;
+        std::fclose(f);
+        auto out = ctx.allocate(1, 1, {"value"});
+        out->writeFloat("value")[0] = float(v);
+        ctx.set(out_, out);
+    }
+};
+
+// Asks for an uninitialised plane and writes nothing: what poisoning catches.
+class ForgetsToWrite final : public darkroom::Filter {
+    darkroom::ImageOut out_{"image", "Never written", {"value"}};
+
+public:
+    darkroom::PortList ports() const override { return {out_}; }
+    void execute(darkroom::Context& ctx) override { ctx.set(out_, ctx.allocate(2, 2, {"value"}, darkroom::Fill::None)); }
+};
+
+// Throws an error that names nothing: the host adds the node, once.
+class Complains final : public darkroom::Filter {
+    darkroom::ImageOut out_{"image", "Never produced"};
+
+public:
+    darkroom::PortList ports() const override { return {out_}; }
+    void execute(darkroom::Context&) override { throw darkroom::Error("the input is not what was expected"); }
+};
+
 inline void registerAll(darkroom::Registrar& r) {
+    r.addFilter<TwoPlanes>("TestTwoPlanes", "Test", "Planes a and b.");
+    r.addFilter<DoubleA>("TestDoubleA", "Test", "c = 2a, passing the rest on.");
+    r.addFilter<CopyAReadingB>("TestCopyAReadingB", "Test", "c = a, reading b too.");
+    r.addFilter<IncrementC>("TestIncrementC", "Test", "d = c + 1, passing the rest on.");
+    r.addFilter<Forward>("TestForward", "Test", "Publishes its input.");
+    r.addFilter<FileNumber>("TestFileNumber", "Test", "A number from a file.");
+    r.addFilter<ForgetsToWrite>("TestForgetsToWrite", "Test", "Leaves its output unwritten.");
+    r.addFilter<Complains>("TestComplains", "Test", "Fails with a plain message.");
     r.addFilter<Source>("TestSource", "Test", "Constant image.");
     r.addFilter<Add>("TestAdd", "Test", "Adds two images.");
     r.addFilter<Sum>("TestSum", "Test", "Adds any number of images.");

@@ -32,10 +32,10 @@ std::shared_ptr<WritableBuffer> awkwardImage() {
                               std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max(),
                               std::numeric_limits<float>::lowest(), 16777217.0f, 0.1f, 1.0f / 3.0f};
     for (std::size_t i = 0; i < b->pixelCount(); ++i) {
-        b->hostFloat("Z")[i] = i % 3 == 0 ? std::numeric_limits<float>::infinity() : 1.0f + float(i) / 7.0f;
-        b->hostFloat("Elevation")[i] = specials[i % std::size(specials)];
-        b->hostUInt("objectId")[i] = i == 0 ? 0xffffffffu : std::uint32_t(i * 2654435761u);
-        b->hostFloat("Normal.X")[i] = std::sin(float(i));
+        b->writeFloat("Z")[i] = i % 3 == 0 ? std::numeric_limits<float>::infinity() : 1.0f + float(i) / 7.0f;
+        b->writeFloat("Elevation")[i] = specials[i % std::size(specials)];
+        b->writeUInt("objectId")[i] = i == 0 ? 0xffffffffu : std::uint32_t(i * 2654435761u);
+        b->writeFloat("Normal.X")[i] = std::sin(float(i));
     }
     Camera c;
     c.position = {0.1, 1.0 / 3.0, -7.25e10};

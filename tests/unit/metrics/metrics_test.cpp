@@ -351,8 +351,8 @@ TEST(Metrics, EdgeMaskOfAnIdChangeAndSplitStatistics) {
     const int w = 7, h = 7;
     // Constant depth; a single pixel with another id at (3, 3): the 3x3 block around it.
     auto g = makeCpuBuffer(w, h, {{"Z"}, {"objectId", ChannelType::UInt32}});
-    float* z = g->requireFloat("Z");
-    std::uint32_t* id = g->requireUInt("objectId");
+    float* z = g->writeFloat("Z");
+    std::uint32_t* id = g->writeUInt("objectId");
     for (int i = 0; i < w * h; ++i) z[i] = 3.0f, id[i] = 1;
     id[3 * w + 3] = 2;
     const EdgeMasks m = edgeMasks(*g);

@@ -47,8 +47,8 @@ void writeShaded(const stress::StressScene& s, const Buffer& g, const std::strin
     auto img = makeCpuBuffer(w, h, {{"R"}, {"G"}, {"B"}, {"A"}});
     const float *z = g.requireFloat("Z"), *f = g.requireFloat(s.colorField);
     const float *nx = g.requireFloat("N.x"), *ny = g.requireFloat("N.y"), *nz = g.requireFloat("N.z");
-    float *r = img->requireFloat("R"), *gg = img->requireFloat("G"), *b = img->requireFloat("B"),
-          *a = img->requireFloat("A");
+    float *r = img->writeFloat("R"), *gg = img->writeFloat("G"), *b = img->writeFloat("B"),
+          *a = img->writeFloat("A");
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::size_t i = std::size_t(y) * w + x;

@@ -50,7 +50,9 @@ public:
 
     // Loads every darkroom-*.so in each directory (or the file itself when an
     // entry is a file). Failures are reported in the returned diagnostics with
-    // the plugin's path and reason, and the plugin is skipped.
+    // the plugin's path and reason, and the plugin is skipped. New or changed
+    // files are first loaded in a child process (darkroom-plugin-probe): one
+    // that crashes, exits or hangs there is quarantined, not loaded.
     Diagnostics loadPlugins(const std::vector<std::string>& searchPath);
     // Loads one plugin file; returns false and appends a diagnostic on failure.
     bool loadPlugin(const std::string& path, Diagnostics& out);
@@ -73,6 +75,7 @@ public:
     const PortList& ports(const std::string& type) const;
 
 private:
+    static void checkRegistrations(const std::vector<FilterInfo>& filters);
     void commit(const Origin& origin, std::vector<FilterInfo> filters,
                 std::vector<CaptureBackendInfo> backends);
     std::map<std::string, RegisteredFilter> filters_;

@@ -1,0 +1,84 @@
+// darkroom-plugin-probe FILE: loads a Darkroom plugin the way the host does
+// (dlopen, ABI check, registration into a throw-away registrar) and says how
+// it went. The host runs it for every new or changed plugin file before
+// loading the file itself (framework/src/core/plugin_scan.cpp).
+//
+// Output: one line "ok" on stdout when everything succeeded, else one line
+// "refused: <reason>". A plugin that exits, crashes or hangs while loading
+// never lets the line be printed; the host tells those apart by the exit
+// status.
+#include <darkroom/plugin.h>
+#include <darkroom/registrar.h>
+#include <darkroom/version.h>
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+namespace {
+
+class CountingRegistrar final : public darkroom::Registrar {
+public:
+    int types = 0;
+    void addFilter(darkroom::FilterInfo info) override {
+        // Constructing the filter and declaring its ports runs plugin code
+        // the host will run later; a crash there belongs to the probe.
+        if (info.create) {
+            auto f = info.create();
+            if (f) (void)f->ports();
+        }
+        ++types;
+    }
+    void addCaptureBackend(darkroom::CaptureBackendInfo info) override {
+        if (info.create) (void)info.create();
+        ++types;
+    }
+};
+
+int answer(const std::string& line) {
+    std::fputs((line + "\n").c_str(), stdout);
+    std::fflush(stdout);
+    // _exit: static destructors of the plugin do not run in the probe.
+    ::_exit(0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: darkroom-plugin-probe PLUGIN.so\n");
+        return 2;
+    }
+    void* handle = ::dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+        const char* e = ::dlerror();
+        return answer(std::string("refused: cannot load plugin: ") + (e ? e : "unknown error"));
+    }
+    auto entry = reinterpret_cast<DarkroomPluginEntry>(::dlsym(handle, DARKROOM_PLUGIN_ENTRY_SYMBOL));
+    if (!entry) return answer("refused: not a Darkroom plugin: it does not export " DARKROOM_PLUGIN_ENTRY_SYMBOL "()");
+    const DarkroomPluginInfo* info = nullptr;
+    try {
+        info = entry();
+    } catch (const std::exception& e) {
+        return answer(std::string("refused: an exception escaped " DARKROOM_PLUGIN_ENTRY_SYMBOL "(): ") + e.what());
+    } catch (...) {
+        return answer("refused: an exception escaped " DARKROOM_PLUGIN_ENTRY_SYMBOL "()");
+    }
+    // What the host refuses by itself (no information, another ABI, no
+    // register function, a registration that reports failure) it also names
+    // by itself: only crashes and escaping exceptions are the probe's to tell.
+    if (!info || info->abi_version != DARKROOM_ABI_VERSION || !info->register_types) return answer("ok");
+    try {
+        CountingRegistrar r;
+        char error[1024] = {0};
+        (void)info->register_types(&r, error, sizeof error);
+    } catch (const std::exception& e) {
+        return answer(std::string("refused: an exception escaped the register function: ") + e.what());
+    } catch (...) {
+        return answer("refused: an exception escaped the register function");
+    }
+    return answer("ok");
+}

@@ -1,0 +1,91 @@
+// Misbehaving plugins, tried as an adversary would: each is reported naming
+// its file and skipped, and the host goes on loading the good one after it.
+#include <darkroom/framework/registry.h>
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace darkroom;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fixture(const std::string& name) {
+    return std::string(DARKROOM_FIXTURE_PLUGIN_DIR) + "/darkroom-fixture-" + name + ".so";
+}
+
+std::string allMessages(const Diagnostics& d) {
+    std::string s;
+    for (const auto& x : d) s += x.str() + "\n";
+    return s;
+}
+
+// Each test scans with a cache of its own, so verdicts are computed here.
+class PluginIsolation : public ::testing::Test {
+protected:
+    void SetUp() override { ::setenv("DARKROOM_PLUGIN_CACHE", dir_.file("scan.tsv").c_str(), 1); }
+    void TearDown() override { ::unsetenv("DARKROOM_PLUGIN_CACHE"); }
+
+    // Loads `bad` then the good fixture; expects one error naming `bad` that
+    // contains `why`, and the good plugin loaded.
+    void expectSkipped(const std::string& bad, const std::string& why) {
+        Registry r;
+        const Diagnostics d = r.loadPlugins({fixture(bad), fixture("good")});
+        ASSERT_EQ(d.size(), 1u) << allMessages(d);
+        EXPECT_EQ(d[0].where, fixture(bad));
+        EXPECT_NE(d[0].message.find(why), std::string::npos) << d[0].message;
+        EXPECT_NE(r.filter("FixtureScale"), nullptr) << "the good plugin after the bad one still loads";
+    }
+    test::TempDir dir_;
+};
+
+}  // namespace
+
+TEST_F(PluginIsolation, AnExceptionFromTheEntryPointIsNamed) {
+    expectSkipped("entry-throws", "exception escaped");
+}
+
+TEST_F(PluginIsolation, AnExceptionFromARawRegisterFunctionIsNamed) {
+    expectSkipped("register-throws", "fixture: raw register throws");
+}
+
+TEST_F(PluginIsolation, ExitInAStaticConstructorIsQuarantined) {
+    expectSkipped("exits-on-load", "ended the process while loading");
+}
+
+TEST_F(PluginIsolation, ACrashWhileRegisteringIsQuarantined) {
+    expectSkipped("crashes-on-register", "crashed while loading or registering");
+}
+
+TEST_F(PluginIsolation, VerdictsAreCachedUntilTheFileChanges) {
+    {
+        Registry r;
+        r.loadPlugins({fixture("crashes-on-register")});
+    }
+    const std::string cache = test::readText(dir_.file("scan.tsv"));
+    EXPECT_NE(cache.find("quarantined"), std::string::npos) << cache;
+    EXPECT_NE(cache.find("darkroom-fixture-crashes-on-register.so"), std::string::npos) << cache;
+    // A copy is another file: it is probed on its own.
+    const std::string copy = dir_.file("darkroom-copy.so");
+    fs::copy_file(fixture("good"), copy);
+    Registry r;
+    const Diagnostics d = r.loadPlugins({copy});
+    EXPECT_TRUE(d.empty()) << allMessages(d);
+    EXPECT_NE(test::readText(dir_.file("scan.tsv")).find("darkroom-copy.so"), std::string::npos);
+}
+
+TEST_F(PluginIsolation, ASymlinkLoopInAPluginFolderIsReportedAndSkipped) {
+    const fs::path folder = dir_.file("plugins");
+    fs::create_directories(folder);
+    fs::create_symlink(folder / "darkroom-loop.so", folder / "darkroom-loop.so");
+    fs::copy_file(fixture("good"), folder / "darkroom-good.so");
+    Registry r;
+    const Diagnostics d = r.loadPlugins({folder.string()});
+    ASSERT_EQ(d.size(), 1u) << allMessages(d);
+    EXPECT_NE(d[0].where.find("darkroom-loop.so"), std::string::npos) << d[0].str();
+    EXPECT_NE(r.filter("FixtureScale"), nullptr);
+}
