@@ -144,6 +144,12 @@ std::vector<float> readChannelValues(const CinemaDatabase& db, const CisImage& i
         return out;
     }
     const auto members = readNpz(path);
+    return checkedMember(db, layer, ch, path, members, warnings).values;  // C order of (W, H): x * H + y
+}
+
+const NpyArray& checkedMember(const CinemaDatabase& db, const CisLayer& layer, const CisChannel& ch,
+                              const std::string& path, const std::vector<NpyArray>& members, Diagnostics* warnings) {
+    const std::size_t W = std::size_t(layer.width), H = std::size_t(layer.height);
     if (members.empty()) throw Error(fmt::format("{}: the archive holds no .npy member", path));
     const NpyArray& a = channelMember(members, path, db, ch, warnings);
     const std::string where = path + ":" + a.name + ".npy";
@@ -160,7 +166,7 @@ std::vector<float> readChannelValues(const CinemaDatabase& db, const CisImage& i
                                 where, shapeText(a.shape), db.csvPath(), db.line(ch.row), sizeColumns(db), layer.id,
                                 W, H, shapeText(expected), hint));
     }
-    return a.values;  // C order of shape (W, H): index x * H + y
+    return a;
 }
 
 void placeLayer(const std::vector<float>& values, const CisImage& image, const CisLayer& layer, float* plane) {

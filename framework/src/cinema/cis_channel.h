@@ -12,6 +12,7 @@
 // is transposed, and flipped for the LL/LR/UR origins, on reading.
 #include <darkroom/framework/cinema/composable.h>
 #include <darkroom/framework/diagnostics.h>
+#include <darkroom/framework/formats/npy.h>
 
 #include <string>
 #include <vector>
@@ -27,6 +28,13 @@ namespace darkroom::cis {
 // named 'data').
 std::vector<float> readChannelValues(const CinemaDatabase& db, const CisImage& image, const CisLayer& layer,
                                      const CisChannel& channel, Diagnostics* warnings);
+
+// The member of a channel .npz that holds `ch` ('data', or the only one),
+// checked against data.csv: shape (layer width, layer height), dtype against
+// CISChannelVarType. Works on headers alone (readNpzHeaders) as well as on
+// whole arrays. Throws as readChannelValues does.
+const NpyArray& checkedMember(const CinemaDatabase& db, const CisLayer& layer, const CisChannel& ch,
+                              const std::string& path, const std::vector<NpyArray>& members, Diagnostics* warnings);
 
 // Writes layer values stored [x][y] (as above) into an image-sized buffer
 // plane with rows top to bottom, following the image's origin and the

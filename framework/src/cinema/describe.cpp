@@ -2,6 +2,7 @@
 // and range, and per FILE column the channels, size and camera of a product.
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/composable.h>
+#include <darkroom/framework/cinema/consistency.h>
 #include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/cinema/product.h>
 #include <darkroom/framework/formats/npy.h>
@@ -48,6 +49,8 @@ CinemaDescription CinemaDatabase::describe() const {
     d.rows = rowCount();
     d.columns = columns_;
     d.warnings = warnings();
+    // Every product against data.csv (headers only), so one odd file among thousands is named.
+    for (auto& x : checkProductFiles(*this)) d.warnings.push_back(std::move(x));
     for (std::size_t c : fileColumns()) {
         CinemaProductInfo p;
         p.column = columns_[c].name;
