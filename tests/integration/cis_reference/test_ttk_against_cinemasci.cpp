@@ -191,3 +191,37 @@ TEST_F(TtkAgainstCinemasci, CompositedAndShadedByTheStoredShadowMatches) {
     EXPECT_GT(shaded, n / 20) << "the shadow channel darkens a visible part of the picture";
     EXPECT_LT(error / double(n), 0.01) << "mean |their ratio - our ratio| (measured 0.0016)";
 }
+
+// docs/examples/ttk-ssao.yaml: our SSAO on the TTK database through the Camera
+// node. No reference picture exists, so the test checks what must hold: AO
+// within [0, 1], none on the background, darkening in the creases of the
+// stone while most of it stays lit.
+TEST(TtkSsaoExample, OurSsaoShadesTheTtkDatabaseThroughTheCameraNode) {
+    if (test::sharedData("cinema/ttk_extracts_001.cdb").empty())
+        GTEST_SKIP() << "../shared/data/cinema/ttk_extracts_001.cdb is absent";
+    Diagnostics d;
+    const std::string examples = std::string(DARKROOM_SOURCE_DIR) + "/docs/examples";
+    const Graph g = loadPipeline(examples + "/ttk-ssao.yaml", test::pluginRegistry(), d);
+    ASSERT_FALSE(hasErrors(d)) << d[0].str();
+    EvaluatorOptions options;
+    options.inputBase = examples;  // as `darkroom run` resolves the pipeline's relative paths
+    Evaluator ev(options);
+    const BufferPtr ao = ev.evaluateImage(g, "ao", "image");
+    ASSERT_TRUE(ao->metadata().camera);
+    const float* a = ao->requireFloat("AO");
+    const float* z = ao->requireFloat("Z");
+    std::size_t surface = 0, dark = 0, lit = 0;
+    for (std::size_t i = 0; i < ao->pixelCount(); ++i) {
+        ASSERT_TRUE(a[i] >= 0.f && a[i] <= 1.f) << i;
+        if (!std::isfinite(z[i])) {
+            EXPECT_EQ(a[i], 1.f) << i;
+            continue;
+        }
+        ++surface;
+        dark += a[i] < 0.7f;
+        lit += a[i] > 0.9f;
+    }
+    EXPECT_GT(surface, 150000u);
+    EXPECT_GT(dark, surface / 100) << "creases and contacts are darkened";
+    EXPECT_GT(lit, surface / 2) << "open surface stays lit";
+}
