@@ -12,6 +12,12 @@ for part in surface flow particles; do
   [ -d "$root/out/demo/$part.cdb" ] ||
     "$darkroom" capture "$root/docs/examples/demo/$part.yaml" --output "$root/out/demo/$part.cdb"
 done
+# The volume example: a tetrahedral .vtu written by an independent script, then captured.
+if [ ! -d "$root/out/volume/tetrahedra.cdb" ]; then
+  mkdir -p "$root/out/volume"
+  [ -f "$root/out/volume/blobs.vtu" ] || python3 "$root/docs/examples/volume/make_tetrahedra.py" "$root/out/volume/blobs.vtu"
+  "$darkroom" capture "$root/docs/examples/volume/tetrahedra.yaml" --output "$root/out/volume/tetrahedra.cdb"
+fi
 status=0
 for pipeline in "$root"/docs/examples/*.yaml; do
   name=$(basename "$pipeline" .yaml)

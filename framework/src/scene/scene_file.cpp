@@ -172,7 +172,8 @@ private:
                         fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
                                                       " needs a volume file (.vtu with 3D cells or .vti)");
                     const VolumeMesh& vol = volume(path, warnings);
-                    if (vol.volumeCellCount() > 0)
+                    // A boundary of a file of surfaces is those surfaces (as ParaView's Extract Surface).
+                    if (vol.volumeCellCount() > 0 || (volumeRep && volumeRep->kind == VolumeRepresentation::Kind::Boundary))
                         return {volumeSurface(vol, volumeRep.value_or(VolumeRepresentation{}), name)};
                     if (volumeRep)
                         fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
