@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
+#include <darkroom/framework/scene/mesh_readers.h>
 #include <darkroom/framework/scene/volume.h>
 
 #include <gmock/gmock.h>
@@ -366,5 +367,32 @@ TEST(VolumeReaders, VtuAndVtiAsWrittenByVtk) {
         ADD_FAILURE();
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("flat.vti:2: WholeExtent 4 x 4 x 1 points is not a volume"));
+    }
+}
+
+// A real file written by TTK's tools (../shared/data/meshes/fertility.vtu):
+// triangles only, so its boundary is its surface, as readMesh reads it.
+TEST(VolumeReaders, FertilityHasNo3DCellsAndItsBoundaryIsItsSurface) {
+    const std::string path = test::sharedData("meshes/fertility.vtu");
+    if (path.empty()) GTEST_SKIP() << "../shared/data/meshes is absent";
+    const VolumeMesh v = readVolume(path);
+    EXPECT_EQ(v.pointCount(), 5166u);
+    EXPECT_EQ(v.volumeCellCount(), 0u);
+    EXPECT_FALSE(isVolumeFile(path));
+    const SceneObject b = volumeSurface(v, VolumeRepresentation{}, "fertility");
+    EXPECT_EQ(b.primitiveCount(), 10344u);
+    EXPECT_EQ(b.primitiveCount(), readMesh(path).front().primitiveCount());
+}
+
+TEST(VolumeReaders, HugeImageExtentIsRefusedBeforeAllocating) {
+    test::TempDir dir;
+    test::writeText(dir.file("big.vti"), R"(<?xml version="1.0"?>
+<VTKFile type="ImageData" version="1.0"><ImageData WholeExtent="0 65535 0 65535 0 65535"><Piece/></ImageData></VTKFile>
+)");
+    try {
+        readVolume(dir.file("big.vti"));
+        ADD_FAILURE();
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("big.vti:2: WholeExtent holds 281474976710656 points"));
     }
 }

@@ -187,6 +187,11 @@ private:
             fail(dataset, "WholeExtent " + std::to_string(v_.dims[0]) + " x " + std::to_string(v_.dims[1]) + " x " +
                               std::to_string(v_.dims[2]) +
                               " points is not a volume (expected at least 2 points on each axis)");
+        // Checked before anything is allocated per point: a tiny file can claim a huge extent.
+        const double points = double(v_.dims[0]) * double(v_.dims[1]) * double(v_.dims[2]);
+        if (points > double(1ull << 28))
+            fail(dataset, "WholeExtent holds " + std::to_string(static_cast<long long>(points)) +
+                              " points; volumes of more than 2^28 (268,435,456) points are not read");
         const auto origin = numbers(dataset, "Origin", 3, false);
         const auto spacing = numbers(dataset, "Spacing", 3, false);
         const auto direction = numbers(dataset, "Direction", 9, false);
