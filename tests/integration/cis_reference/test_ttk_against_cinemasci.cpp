@@ -192,7 +192,7 @@ TEST_F(TtkAgainstCinemasci, CompositedAndShadedByTheStoredShadowMatches) {
     EXPECT_LT(error / double(n), 0.01) << "mean |their ratio - our ratio| (measured 0.0016)";
 }
 
-// docs/examples/ttk-ssao.yaml: our SSAO on the TTK database through the Camera
+// docs/examples/ttk/ttk-ssao.yaml: our SSAO on the TTK database through the Camera
 // node. No reference picture exists, so the test checks what must hold: AO
 // within [0, 1], none on the background, darkening in the creases of the
 // stone while most of it stays lit.
@@ -200,7 +200,7 @@ TEST(TtkSsaoExample, OurSsaoShadesTheTtkDatabaseThroughTheCameraNode) {
     if (test::sharedData("cinema/ttk_extracts_001.cdb").empty())
         GTEST_SKIP() << "../shared/data/cinema/ttk_extracts_001.cdb is absent";
     Diagnostics d;
-    const std::string examples = std::string(DARKROOM_SOURCE_DIR) + "/docs/examples";
+    const std::string examples = std::string(DARKROOM_SOURCE_DIR) + "/docs/examples/ttk";
     const Graph g = loadPipeline(examples + "/ttk-ssao.yaml", test::pluginRegistry(), d);
     ASSERT_FALSE(hasErrors(d)) << d[0].str();
     EvaluatorOptions options;
