@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the example gallery: captures the demo scene (if out/demo is
-# missing), then runs every pipeline in docs/examples/*.yaml, writing its
+# missing), then runs every pipeline in docs/examples/*.yaml (and those on other inputs in docs/examples/ttk/ and volume/), writing its
 # pictures into docs/gallery/ (scaled to 512 pixels wide).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,8 +12,15 @@ for part in surface flow particles; do
   [ -d "$root/out/demo/$part.cdb" ] ||
     "$darkroom" capture "$root/docs/examples/demo/$part.yaml" --output "$root/out/demo/$part.cdb"
 done
+# The volume example: a tetrahedral .vtu written by an independent script, then captured.
+if [ ! -d "$root/out/volume/tetrahedra.cdb" ]; then
+  mkdir -p "$root/out/volume"
+  [ -f "$root/out/volume/blobs.vtu" ] || python3 "$root/docs/examples/volume/make_tetrahedra.py" "$root/out/volume/blobs.vtu"
+  "$darkroom" capture "$root/docs/examples/volume/tetrahedra.yaml" --output "$root/out/volume/tetrahedra.cdb"
+fi
 status=0
-for pipeline in "$root"/docs/examples/*.yaml; do
+# The pipelines on other inputs (the shared TTK database, the volume example) live in subfolders.
+for pipeline in "$root"/docs/examples/*.yaml "$root"/docs/examples/ttk/*.yaml "$root"/docs/examples/volume/volume-*.yaml; do
   name=$(basename "$pipeline" .yaml)
   if "$darkroom" run "$pipeline" --output "$root/docs/gallery"; then
     echo "rendered $name"

@@ -115,6 +115,8 @@ void addInfoCommand(CLI::App& app, GlobalOptions&, Runner& run) {
                 const CinemaDescription d = db.describe();
                 report(d.warnings);
                 fmt::print("{}", formatDescription(d));
+                // A product that disagrees with data.csv fails the check, as reading it would.
+                if (hasErrors(d.warnings)) return int(kBadInput);
             } catch (const Error& e) {
                 reportError(e.what());
                 return int(kBadInput);

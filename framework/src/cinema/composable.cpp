@@ -1,8 +1,9 @@
 // Composable image sets: grouping rows into images/layers/channels and
 // assembling one layer as a buffer with Darkroom's depth convention.
+#include "cis_channel.h"
+
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/composable.h>
-#include <darkroom/framework/cinema/product.h>
 
 #include <fmt/format.h>
 
@@ -44,6 +45,17 @@ int integerCell(const CinemaDatabase& db, std::size_t row, const char* column, i
         throw Error(fmt::format("{}:{}: {} is '{}'; expected a {} integer", db.csvPath(), db.line(row), column,
                                 db.cell(row, *c), positive ? "positive" : "non-negative"));
     return int(v);
+}
+
+// Every row of an image (layer) must repeat its size and offsets: a row that
+// disagrees is reported, never resolved by taking the first.
+void sameAsEarlier(const CinemaDatabase& db, std::size_t row, const char* column, int earlier, int fallback,
+                   bool positive, const std::string& what) {
+    const int v = integerCell(db, row, column, fallback, positive);
+    if (v != earlier)
+        throw Error(fmt::format("{}:{}: {} is {} but earlier rows of {} say {}; every channel row of it must "
+                                "agree",
+                                db.csvPath(), db.line(row), column, v, what, earlier));
 }
 
 std::string simpleQueryValue(const std::string& v) {
@@ -100,8 +112,19 @@ std::vector<CisImage> composableImages(const CinemaDatabase& db, const std::vect
             i.id = imageId;
             i.width = integerCell(db, r, "CISImageWidth", 0, true);
             i.height = integerCell(db, r, "CISImageHeight", 0, true);
+            i.origin = cis::parseOrigin(db, r);
+            const auto originColumn = db.findColumn("CISOrigin");
+            i.originStated = originColumn && !db.cell(r, *originColumn).empty();
             images.push_back(std::move(i));
             img = images.end() - 1;
+        } else {
+            sameAsEarlier(db, r, "CISImageWidth", img->width, 0, true, "image " + imageId);
+            sameAsEarlier(db, r, "CISImageHeight", img->height, 0, true, "image " + imageId);
+        }
+        if (cis::parseOrigin(db, r) != img->origin && db.findColumn("CISOrigin")) {
+            throw Error(fmt::format("{}:{}: CISOrigin is '{}' but earlier rows of image {} say {}; one image has "
+                                    "one origin",
+                                    db.csvPath(), db.line(r), cellOf(db, r, "CISOrigin"), imageId, img->origin));
         }
         auto layer = std::find_if(img->layers.begin(), img->layers.end(),
                                   [&](const CisLayer& l) { return l.id == layerId; });
@@ -120,6 +143,12 @@ std::vector<CisImage> composableImages(const CinemaDatabase& db, const std::vect
             }
             img->layers.push_back(std::move(l));
             layer = img->layers.end() - 1;
+        } else {
+            const std::string what = "layer " + layerId + " of image " + imageId;
+            sameAsEarlier(db, r, "CISLayerWidth", layer->width, img->width, true, what);
+            sameAsEarlier(db, r, "CISLayerHeight", layer->height, img->height, true, what);
+            sameAsEarlier(db, r, "CISLayerOffsetX", layer->offsetX, 0, false, what);
+            sameAsEarlier(db, r, "CISLayerOffsetY", layer->offsetY, 0, false, what);
         }
         CisChannel ch;
         ch.row = r;
@@ -156,30 +185,21 @@ std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db, co
     const int W = image.width, H = image.height;
     if (W <= 0 || H <= 0 || layer.width <= 0 || layer.height <= 0 || layer.offsetX + layer.width > W ||
         layer.offsetY + layer.height > H)
-        throw Error(fmt::format("Cinema database '{}': layer {} ({} x {} at {}, {}) does not fit image {} ({} x {})",
-                                db.path(), layer.id, layer.width, layer.height, layer.offsetX, layer.offsetY,
-                                image.id, W, H));
+        throw Error(fmt::format("{}:{}: layer {} ({} x {} at {}, {}: CISLayerWidth/Height, CISLayerOffsetX/Y) does "
+                                "not fit image {} ({} x {}: CISImageWidth/Height); expected offset + size within "
+                                "the image",
+                                db.csvPath(), layer.channels.empty() ? 0 : db.line(layer.channels.front().row),
+                                layer.id, layer.width, layer.height, layer.offsetX, layer.offsetY, image.id, W, H));
     auto out = makeCpuBuffer(W, H, descs);
     auto& attrs = out->metadata().attributes;
     attrs["source"] = db.path();
     attrs["cis.image"] = image.id;
     attrs["cis.layer"] = layer.id;
+    attrs["cis.origin"] = image.originStated ? image.origin : image.origin + " (assumed: no CISOrigin in data.csv)";
     for (const auto& ch : layer.channels) {
         const std::string path = db.productPath(ch.row);
-        const auto product = readCinemaProduct(path, warnings);
-        if (product->width() != layer.width || product->height() != layer.height)
-            throw Error(fmt::format("{}: {} x {} pixels, but {}:{} says layer {} is {} x {}", path, product->width(),
-                                    product->height(), db.csvPath(), db.line(ch.row), layer.id, layer.width,
-                                    layer.height));
-        const auto names = product->channelNames();
-        const float* src = names.empty() ? nullptr : product->hostFloat(names.front());
-        if (!src) throw Error(fmt::format("{}: expected a float channel for {}", path, ch.bufferName()));
-        if (names.size() > 1 && warnings)
-            warnings->push_back({Diagnostic::Severity::Warning, path,
-                                 fmt::format("{} channels; only the first ({}) is used as {}", names.size(),
-                                             names.front(), ch.bufferName()),
-                                 {}});
-        std::vector<float> values(src, src + product->pixelCount());
+        // Layer-sized, stored [x][y]; the conversions below do not depend on the layout.
+        std::vector<float> values = cis::readChannelValues(db, image, layer, ch, warnings);
         const float background = ch.isDepth ? kInf : kNaN;
         if (ch.isDepth) {
             // Which convention: NaN marks Ascent's raw distances; values
@@ -224,9 +244,7 @@ std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db, co
         }
         float* dst = out->writeFloat(ch.bufferName());
         std::fill(dst, dst + std::size_t(W) * H, background);
-        for (int y = 0; y < layer.height; ++y)
-            std::copy_n(values.data() + std::size_t(y) * layer.width, layer.width,
-                        dst + std::size_t(y + layer.offsetY) * W + layer.offsetX);
+        cis::placeLayer(values, image, layer, dst);
         if (!ch.colormap.empty()) attrs["colormap." + ch.bufferName()] = ch.colormap;
     }
     return out;

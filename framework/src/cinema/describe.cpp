@@ -2,6 +2,7 @@
 // and range, and per FILE column the channels, size and camera of a product.
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/composable.h>
+#include <darkroom/framework/cinema/consistency.h>
 #include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/cinema/product.h>
 #include <darkroom/framework/formats/npy.h>
@@ -24,7 +25,9 @@ bool hasExtension(const std::string& path, const char* ext) {
 }
 
 // .npz: the members' dtypes and shapes from their headers, without reading the data.
-void describeNpz(CinemaProductInfo& p) {
+// A composable image set's arrays are [x][y] (shape = width, height); other
+// .npz products are (rows, columns) like any numpy image.
+void describeNpz(CinemaProductInfo& p, bool composable) {
     for (const auto& a : readNpzHeaders(p.path)) {
         std::string shape;
         for (std::size_t d : a.shape) shape += (shape.empty() ? "" : ", ") + std::to_string(d);
@@ -32,8 +35,8 @@ void describeNpz(CinemaProductInfo& p) {
                                         a.fortranOrder ? " Fortran order" : ""));
         p.channels.push_back({a.name, ChannelType::Float32});
         if (a.shape.size() >= 2 && p.width == 0) {
-            p.height = int(a.shape[0]);
-            p.width = int(a.shape[1]);
+            p.width = int(a.shape[composable ? 0 : 1]);
+            p.height = int(a.shape[composable ? 1 : 0]);
         }
     }
 }
@@ -46,6 +49,8 @@ CinemaDescription CinemaDatabase::describe() const {
     d.rows = rowCount();
     d.columns = columns_;
     d.warnings = warnings();
+    // Every product against data.csv (headers only), so one odd file among thousands is named.
+    for (auto& x : checkProductFiles(*this)) d.warnings.push_back(std::move(x));
     for (std::size_t c : fileColumns()) {
         CinemaProductInfo p;
         p.column = columns_[c].name;
@@ -59,7 +64,7 @@ CinemaDescription CinemaDatabase::describe() const {
             p.path = productPath(row, p.column);
             try {
                 if (hasExtension(p.path, ".npz")) {
-                    describeNpz(p);
+                    describeNpz(p, isComposableImageSet(*this));
                 } else {
                     Diagnostics notes;
                     const auto image = readCinemaProduct(p.path, &notes);
@@ -78,8 +83,9 @@ CinemaDescription CinemaDatabase::describe() const {
     if (isComposableImageSet(*this)) {
         try {
             for (const auto& img : composableImages(*this)) {
-                d.composable.push_back(fmt::format("image {} ({} x {}), {} layers", img.id, img.width, img.height,
-                                                   img.layers.size()));
+                d.composable.push_back(fmt::format("image {} ({} x {}), {} layers, origin {}{}", img.id, img.width,
+                                                   img.height, img.layers.size(), img.origin,
+                                                   img.originStated ? "" : " (assumed: no CISOrigin column)"));
                 for (const auto& l : img.layers) {
                     std::string channels;
                     for (const auto& ch : l.channels) {

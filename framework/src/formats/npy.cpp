@@ -260,7 +260,9 @@ std::string encodeNpy(const NpyArray& array) {
     for (std::size_t i = 0; i < array.shape.size(); ++i)
         shape += (i ? ", " : "") + std::to_string(array.shape[i]);
     shape += array.shape.size() == 1 ? ",)" : ")";  // Python's one-element tuple
-    std::string dict = "{'descr': '<f4', 'fortran_order': False, 'shape': " + shape + ", }";
+    const bool fortran = array.fortranOrder && array.shape.size() >= 2;
+    std::string dict = std::string("{'descr': '<f4', 'fortran_order': ") + (fortran ? "True" : "False") +
+                       ", 'shape': " + shape + ", }";
     // numpy pads the header with spaces so that the data starts 64-byte aligned.
     const std::size_t total = 10 + dict.size() + 1;
     dict.append((64 - total % 64) % 64, ' ');
@@ -273,8 +275,18 @@ std::string encodeNpy(const NpyArray& array) {
     out += dict;
     const std::size_t at = out.size();
     out.resize(at + array.values.size() * 4);
+    // Fortran order (first index fastest) when asked, so readers of both layouts can be tested.
+    const std::size_t dims = array.shape.size();
+    std::vector<std::size_t> index(dims, 0), cStride(dims, 1);
+    for (std::size_t d = dims; d > 1; --d) cStride[d - 2] = cStride[d - 1] * array.shape[d - 1];
     for (std::size_t i = 0; i < array.values.size(); ++i) {
-        std::uint32_t v = std::bit_cast<std::uint32_t>(array.values[i]);
+        std::size_t from = i;
+        if (fortran) {
+            from = 0;
+            for (std::size_t d = 0; d < dims; ++d) from += index[d] * cStride[d];
+            for (std::size_t d = 0; d < dims && ++index[d] == array.shape[d]; ++d) index[d] = 0;
+        }
+        std::uint32_t v = std::bit_cast<std::uint32_t>(array.values[from]);
         for (int b = 0; b < 4; ++b) out[at + i * 4 + b] = char((v >> (8 * b)) & 0xff);
     }
     return out;

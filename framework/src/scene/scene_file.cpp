@@ -8,11 +8,15 @@
 #include <darkroom/framework/scene/generators.h>
 #include <darkroom/framework/scene/mesh_readers.h>
 #include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/framework/scene/volume.h>
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 
 namespace darkroom {
@@ -93,15 +97,89 @@ private:
         return out;
     }
 
-    std::vector<SceneObject> loadParts(const YAML::Node& o, const std::string& name, std::vector<std::string>& warnings) const {
+    // The volume representation an object asks for (boundary, isosurface with
+    // contourBy and isosurfaces, slice with planes), or nullopt for surface,
+    // lines and points. Keys that belong to another representation are errors.
+    std::optional<VolumeRepresentation> volumeRepresentation(const YAML::Node& o) const {
+        const YAML::Node r = o["representation"];
+        const std::string s = r ? text(r, "representation") : std::string();
+        std::optional<VolumeRepresentation> v;
+        if (s == "boundary" || s == "isosurface" || s == "slice") {
+            v.emplace();
+            v->kind = s == "boundary" ? VolumeRepresentation::Kind::Boundary
+                      : s == "isosurface" ? VolumeRepresentation::Kind::Isosurface
+                                          : VolumeRepresentation::Kind::Slice;
+        }
+        const bool iso = v && v->kind == VolumeRepresentation::Kind::Isosurface;
+        const bool slice = v && v->kind == VolumeRepresentation::Kind::Slice;
+        for (const char* key : {"contourBy", "isosurfaces"})
+            if (o[key] && !iso) fail(o[key], std::string("'") + key + "' only applies to representation: isosurface");
+        if (o["planes"] && !slice) fail(o["planes"], "'planes' only applies to representation: slice");
+        if (iso) {
+            if (!o["contourBy"]) fail(r, "representation isosurface needs 'contourBy' (the point field to contour)");
+            if (!o["isosurfaces"]) fail(r, "representation isosurface needs 'isosurfaces' (a list of values)");
+            v->contourBy = text(o["contourBy"], "contourBy");
+            const YAML::Node values = o["isosurfaces"];
+            if (values.IsScalar()) v->isovalues.push_back(number(values, "isosurfaces"));
+            else if (values.IsSequence() && values.size() > 0)
+                for (const auto& x : values) v->isovalues.push_back(number(x, "an isosurface value"));
+            else fail(values, "'isosurfaces' must be a value or a non-empty list of values");
+        }
+        if (slice) {
+            const YAML::Node planes = o["planes"];
+            if (!planes) fail(r, "representation slice needs 'planes' (a list of {origin: [x, y, z], normal: [x, y, z]})");
+            if (!planes.IsSequence() || planes.size() == 0)
+                fail(planes, "'planes' must be a non-empty list of {origin: [x, y, z], normal: [x, y, z]}");
+            for (const auto& pl : planes) {
+                if (!pl.IsMap()) fail(pl, "each plane must be a map {origin: [x, y, z], normal: [x, y, z]}");
+                checkKeys(pl, {"origin", "normal"}, "a slice plane");
+                SlicePlane plane;
+                if (pl["origin"]) plane.origin = vec3(pl["origin"], "origin");
+                if (!pl["normal"]) fail(pl, "a slice plane needs a 'normal'");
+                plane.normal = vec3(pl["normal"], "normal");
+                if (!(length(plane.normal) > 0)) fail(pl["normal"], "a plane's normal must not be zero");
+                v->planes.push_back(plane);
+            }
+        }
+        return v;
+    }
+
+    // A volume file read once per scene, however many objects draw it.
+    const VolumeMesh& volume(const std::string& path, std::vector<std::string>& warnings) const {
+        auto& slot = volumes_[path];
+        if (!slot) slot = std::make_shared<VolumeMesh>(readVolume(path, &warnings));
+        return *slot;
+    }
+
+    std::vector<SceneObject> loadParts(const YAML::Node& o, const std::string& name, std::vector<std::string>& warnings,
+                                       const std::optional<VolumeRepresentation>& volumeRep) const {
         const bool hasFile = bool(o["file"]), hasGenerator = bool(o["generator"]);
         if (hasFile == hasGenerator) fail(o, "object '" + name + "' needs exactly one of 'file' or 'generator'");
         if (o["parameters"] && !hasGenerator) fail(o["parameters"], "'parameters' only apply to a 'generator' object");
+        if (volumeRep && hasGenerator)
+            fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
+                                          " needs a volume file (.vtu with 3D cells or .vti), not a generator");
         try {
             if (hasFile) {
                 std::filesystem::path p = text(o["file"], "file");
                 if (p.is_relative()) p = std::filesystem::path(baseDir_) / p;
-                return readMesh(p.lexically_normal().string(), &warnings);
+                const std::string path = p.lexically_normal().string();
+                // Volumes: the chosen representation, or their boundary as ParaView's Surface shows it.
+                std::string ext = p.extension().string();
+                for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+                if (volumeRep || ext == ".vti" || ext == ".vtu") {
+                    if (volumeRep && ext != ".vti" && ext != ".vtu")
+                        fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
+                                                      " needs a volume file (.vtu with 3D cells or .vti)");
+                    const VolumeMesh& vol = volume(path, warnings);
+                    // A boundary of a file of surfaces is those surfaces (as ParaView's Extract Surface).
+                    if (vol.volumeCellCount() > 0 || (volumeRep && volumeRep->kind == VolumeRepresentation::Kind::Boundary))
+                        return {volumeSurface(vol, volumeRep.value_or(VolumeRepresentation{}), name)};
+                    if (volumeRep)
+                        fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
+                                                      " needs 3D cells, and '" + path + "' has none");
+                }
+                return readMesh(path, &warnings);
             }
             std::map<std::string, std::string> params;
             if (const YAML::Node ps = o["parameters"]) {
@@ -126,13 +204,15 @@ private:
 
     void loadObject(const YAML::Node& o, Scene& scene, std::vector<std::string>& warnings) {
         if (!o.IsMap()) fail(o, "each object must be a map (with 'file' or 'generator')");
-        checkKeys(o, {"name", "file", "generator", "parameters", "representation", "radius", "fields", "translate", "scale"},
+        checkKeys(o, {"name", "file", "generator", "parameters", "representation", "contourBy", "isosurfaces", "planes",
+                      "radius", "fields", "translate", "scale"},
                   "an object");
         std::string name;
         if (o["name"]) name = text(o["name"], "name");
         else if (o["file"]) name = std::filesystem::path(text(o["file"], "file")).stem().string();
         else if (o["generator"]) name = text(o["generator"], "generator");
-        std::vector<SceneObject> parts = loadParts(o, name, warnings);
+        const std::optional<VolumeRepresentation> volumeRep = volumeRepresentation(o);
+        std::vector<SceneObject> parts = loadParts(o, name, warnings, volumeRep);
 
         Vec3 scale{1, 1, 1}, translate{0, 0, 0};
         if (const YAML::Node s = o["scale"]) {
@@ -142,12 +222,12 @@ private:
         if (o["translate"]) translate = vec3(o["translate"], "translate");
 
         std::optional<Representation> rep;
-        if (const YAML::Node r = o["representation"]) {
+        if (const YAML::Node r = o["representation"]; r && !volumeRep) {
             const std::string s = text(r, "representation");
             if (s == "surface") rep = Representation::Surface;
             else if (s == "lines") rep = Representation::Lines;
             else if (s == "points") rep = Representation::Points;
-            else fail(r, "representation must be surface, lines or points, got '" + s + "'");
+            else fail(r, "representation must be surface, lines or points (volumes: boundary, isosurface or slice), got '" + s + "'");
         }
         std::optional<float> radius;
         if (const YAML::Node r = o["radius"]) {
@@ -328,6 +408,7 @@ private:
     }
 
     std::string source_, baseDir_;
+    mutable std::map<std::string, std::shared_ptr<VolumeMesh>> volumes_;
 };
 
 }  // namespace

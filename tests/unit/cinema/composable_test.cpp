@@ -59,23 +59,26 @@ TEST(ComposableImageSet, TtkDepthBecomesZWithInfiniteBackgroundAndKeepsOrdering)
     EXPECT_EQ(b->metadata().attributes.at("cis.layer"), "l001");
     const float* za = a->requireFloat("Z");
     const float* zb = b->requireFloat("Z");
+    // The .npz arrays are [x][y] (shape = width, height): value (x, y) at x * 1024 + y.
     const auto depthA = readNpz(path + "/000_Depth.npz").front().values;
     const auto depthB = readNpz(path + "/012_Depth.npz").front().values;
     std::size_t background = 0, both = 0;
-    for (std::size_t i = 0; i < depthA.size(); ++i) {
-        if (depthA[i] == 1.0f) {
-            ++background;
-            EXPECT_EQ(za[i], kInf) << "pixel " << i;
-            EXPECT_TRUE(std::isnan(a->requireFloat("Elevation")[i]));
-        } else {
-            EXPECT_TRUE(std::isfinite(za[i]));
+    for (std::size_t x = 0; x < 1024; ++x)
+        for (std::size_t y = 0; y < 1024; ++y) {
+            const std::size_t k = x * 1024 + y, i = y * 1024 + x;
+            if (depthA[k] == 1.0f) {
+                ++background;
+                EXPECT_EQ(za[i], kInf) << "pixel " << i;
+                EXPECT_TRUE(std::isnan(a->requireFloat("Elevation")[i]));
+            } else {
+                EXPECT_TRUE(std::isfinite(za[i]));
+            }
+            if (depthA[k] < 1.0f && depthB[k] < 1.0f) {
+                ++both;
+                // The nearer object (smaller stored depth) has the smaller Z.
+                EXPECT_EQ(za[i] < zb[i], depthA[k] < depthB[k]) << "pixel " << i;
+            }
         }
-        if (depthA[i] < 1.0f && depthB[i] < 1.0f) {
-            ++both;
-            // The nearer object (smaller stored depth) has the smaller Z.
-            EXPECT_EQ(za[i] < zb[i], depthA[i] < depthB[i]) << "pixel " << i;
-        }
-    }
     EXPECT_EQ(background, 874251u);  // counted independently from the .npz
     EXPECT_GT(both, 1000u);          // the objects overlap on screen
 }
@@ -85,13 +88,14 @@ TEST(ComposableImageSet, OffsetsNearFarAndAsciiNaNDepthAreConverted) {
     namespace fs = std::filesystem;
     fs::create_directories(dir.file("s.cdb"));
     const std::string db = dir.file("s.cdb");
-    // Layer a: TTK depth 2x2 at offset (1, 1) in a 4x3 image, near 2 far 6.
+    // Layer a: TTK depth 2x2 at offset (1, 1) in a 4x3 image, near 2 far 6;
+    // [x][y]: (0,0) = 0, (0,1) = 0.5, (1,0) = 1, (1,1) = 0.25.
     writeNpz(db + "/a_depth.npz", {NpyArray{"data", "<f4", {2, 2}, false, {0.0f, 0.5f, 1.0f, 0.25f}}});
     writeNpz(db + "/a_val.npz", {NpyArray{"data", "<f4", {2, 2}, false, {1, 2, 3, 4}}});
     // Layer b: Ascent-style raw distance with NaN background, full image.
     std::vector<float> raw(12, 7.5f);
     raw[5] = std::numeric_limits<float>::quiet_NaN();
-    writeNpz(db + "/b_depth.npz", {NpyArray{"data", "<f4", {3, 4}, false, raw}});
+    writeNpz(db + "/b_depth.npz", {NpyArray{"data", "<f4", {4, 3}, false, raw}});  // x = 1, y = 2 is NaN
     test::writeText(db + "/data.csv",
                     "object,CamNear,CamFar,CISImage,CISImageWidth,CISImageHeight,CISLayer,CISLayerWidth,"
                     "CISLayerHeight,CISLayerOffsetX,CISLayerOffsetY,CISChannel,CISChannelVar,FILE\n"
@@ -107,14 +111,14 @@ TEST(ComposableImageSet, OffsetsNearFarAndAsciiNaNDepthAreConverted) {
     EXPECT_EQ(z[0], kInf);  // outside the layer
     EXPECT_TRUE(std::isnan(v[0]));
     EXPECT_FLOAT_EQ(z[1 * 4 + 1], 2.0f);   // d = 0 -> near
-    EXPECT_FLOAT_EQ(z[1 * 4 + 2], 4.0f);   // d = 0.5
-    EXPECT_EQ(z[2 * 4 + 1], kInf);         // d = 1 -> background
+    EXPECT_FLOAT_EQ(z[2 * 4 + 1], 4.0f);   // d = 0.5 at x = 0, y = 1: row 2, column 1
+    EXPECT_EQ(z[1 * 4 + 2], kInf);         // d = 1 at x = 1, y = 0 -> background
     EXPECT_FLOAT_EQ(z[2 * 4 + 2], 3.0f);   // d = 0.25
     EXPECT_EQ(v[2 * 4 + 2], 4.f);
     EXPECT_THAT(a->metadata().attributes.at("depth.convention"), HasSubstr("near 2 far 6"));
     const auto b = readComposableRows(cdb, cdb.query("object = 'b'"), &warnings);
-    EXPECT_EQ(b->requireFloat("Z")[5], kInf);
-    EXPECT_EQ(b->requireFloat("Z")[4], 7.5f);
+    EXPECT_EQ(b->requireFloat("Z")[2 * 4 + 1], kInf);
+    EXPECT_EQ(b->requireFloat("Z")[5], 7.5f);
     EXPECT_THAT(b->metadata().attributes.at("depth.convention"), HasSubstr("Ascent"));
     // Rows of both layers: an error that lists how to pick one.
     try {
@@ -136,8 +140,10 @@ TEST(ComposableImageSet, ProductOfTheWrongSizeIsAnErrorNamingIt) {
     const auto cdb = CinemaDatabase::open(db);
     try {
         readComposableRows(cdb, {0});
-        ADD_FAILURE() << "a 3 x 2 product was read as a 4 x 4 layer";
+        ADD_FAILURE() << "a 2 x 3 product was read as a 4 x 4 layer";
     } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("d.npz: 3 x 2 pixels"));
+        EXPECT_THAT(e.what(), HasSubstr("d.npz:data.npy: shape (2, 3)"));
+        EXPECT_THAT(e.what(), HasSubstr("data.csv:2 CISImageWidth/CISImageHeight"));
+        EXPECT_THAT(e.what(), HasSubstr("expected shape (4, 4)"));
     }
 }

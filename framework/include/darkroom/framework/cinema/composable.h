@@ -42,6 +42,10 @@ struct CisLayer {
 struct CisImage {
     std::string id;  // CISImage
     int width = 0, height = 0;
+    // The corner where pixel (0, 0) of every channel lies: "UL", "UR", "LL" or
+    // "LR" (CISOrigin). "UL" when data.csv has no CISOrigin (originStated false).
+    std::string origin = "UL";
+    bool originStated = false;
     std::vector<CisLayer> layers;  // in order of first appearance
 };
 
@@ -56,7 +60,12 @@ DARKROOM_API std::vector<CisImage> composableImages(const CinemaDatabase& db,
 
 // Reads every channel of one layer into a buffer of the IMAGE's size, the
 // layer placed at its offset (pixels outside it: Z = +inf, other channels
-// NaN). Depth becomes `Z`:
+// NaN). Channel arrays are indexed [x][y] (.npy shape = width, height) with y
+// counted from the CISOrigin corner (UL when absent), as the CIS specification
+// and cinemasci's renderer read them; the buffer has rows top to bottom.
+// A file whose shape, dtype or members disagree with data.csv is an error
+// naming the file, the data.csv line and column and what was expected.
+// Depth becomes `Z`:
 // - TTK (values in [0,1], background exactly 1.0): 1.0 -> +inf; with the
 //   camera's near/far known (columns CamNear/CamFar or CamNearFar_0/_1)
 //   Z = near + d (far - near), planar world depth; without them the
@@ -64,7 +73,8 @@ DARKROOM_API std::vector<CisImage> composableImages(const CinemaDatabase& db,
 //   and ONE warning says so.
 // - Ascent (NaN background): NaN -> +inf, distances kept.
 // Metadata attributes: "colormap.<var>" = colour-map JSON path,
-// "cis.image", "cis.layer", "source", "depth.convention" (how Z was made).
+// "cis.image", "cis.layer", "cis.origin" (with "(assumed)" when data.csv does
+// not say), "source", "depth.convention" (how Z was made).
 DARKROOM_API std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db,
                                                                  const CisImage& image,
                                                                  const CisLayer& layer,

@@ -52,7 +52,8 @@ DARKROOM_API std::vector<NpyArray> readNpzHeaders(const std::string& path);
 // float32, version 1.0 headers), deflated when `compress`; atomically.
 DARKROOM_API void writeNpz(const std::string& path, const std::vector<NpyArray>& arrays,
                            bool compress = false);
-// The .npy bytes of one array as float32 ("<f4", C order).
+// The .npy bytes of one array as float32 ("<f4"); `values` are in C order and are
+// stored in Fortran order (header fortran_order True) when `fortranOrder` is set.
 DARKROOM_API std::string encodeNpy(const NpyArray& array);
 
 }  // namespace darkroom
