@@ -1,0 +1,81 @@
+#pragma once
+// One evaluator on its own thread, fed with "the latest job": submitting
+// while a job waits replaces it (only the newest counts), and the worker
+// takes the newest job whenever it becomes free. The full-resolution worker
+// also cancels the job it is running when a newer one arrives; the preview
+// worker lets it finish, so a continuous drag still shows a frame every
+// preview time instead of cancelling each one before it lands.
+#include "evaluator_adapter.h"
+
+#include <darkroom/framework/graph.h>
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QThread>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+namespace editor {
+
+struct EvalJob {
+    std::shared_ptr<const darkroom::Graph> graph;
+    QString node, port, inputBase;
+    std::uint64_t generation = 0;
+    int level = 0;            // 0 = full resolution; k = every source at 1/2^k
+    double predicted = -1;    // full-resolution seconds predicted for the dirty nodes
+};
+
+struct EvalResult {
+    darkroom::BufferPtr image;
+    QString node;
+    int level = 0;
+    std::uint64_t generation = 0;
+    FrameProfile profile;
+    double predicted = -1;
+    QString error;            // empty on success
+    QStringList errorNodes;   // nodes the error names (shown red)
+};
+
+class EvalWorker : public QObject {
+    Q_OBJECT
+public:
+    // `stale` tells whether a job is out of date (asked on the worker
+    // thread, also while it runs); `cancelRunningOnSubmit` as above.
+    EvalWorker(bool cancelRunningOnSubmit, std::function<bool(const EvalJob&)> stale,
+               QObject* parent = nullptr);
+    ~EvalWorker() override;
+
+    void submit(EvalJob job);
+    // A job waits, runs, or its result has not been delivered yet.
+    bool busy() const;
+    EvaluatorAdapter& adapter() { return adapter_; }
+    const EvaluatorAdapter& adapter() const { return adapter_; }
+
+signals:
+    void done(const editor::EvalResult& result);  // on the owner's thread
+
+private:
+    void runPending();  // on the worker thread
+    std::optional<EvalResult> evaluate(const EvalJob& job);  // nullopt: cancelled
+
+    const bool cancelRunningOnSubmit_;
+    const std::function<bool(const EvalJob&)> stale_;
+    EvaluatorAdapter adapter_;
+    QThread thread_;
+    QObject* context_;  // lives on thread_
+    mutable std::mutex mutex_;
+    std::optional<EvalJob> pending_;
+    bool posted_ = false;
+    bool running_ = false;
+    int undelivered_ = 0;
+    std::atomic<bool> stopping_{false};
+};
+
+}  // namespace editor
+
+Q_DECLARE_METATYPE(editor::EvalResult)
