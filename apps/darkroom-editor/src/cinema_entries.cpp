@@ -52,17 +52,8 @@ darkroom::BufferPtr CinemaEntryReader::read(const QString& parameters) {
 }
 
 QImage thumbnail(const darkroom::Buffer& b, int size) {
-    const QStringList modes = displayModes(b);
-    if (modes.isEmpty()) return {};
-    QString mode = modes.front();
-    if (!modes.contains(QStringLiteral("Colour"))) {
-        for (const QString& m : modes)
-            if (m.startsWith(QLatin1String("Channel ")) && m != QLatin1String("Channel Z") &&
-                m != QLatin1String("Channel AO") && m != QLatin1String("Channel A")) {
-                mode = m;
-                break;
-            }
-    }
+    const QString mode = preferredMode(displayModes(b));
+    if (mode.isEmpty()) return {};
     return renderDisplay(b, mode).scaled(size, size, Qt::KeepAspectRatio, Qt::SmoothTransformation);
 }
 

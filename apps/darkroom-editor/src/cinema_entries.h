@@ -48,8 +48,7 @@ private:
     std::unique_ptr<darkroom::Filter> filter_;
 };
 
-// The mode a thumbnail shows: colour, else the first scalar that is not
-// depth or occlusion, else depth; empty image when the buffer has none.
+// A thumbnail of preferredMode(); empty when the buffer has nothing to show.
 QImage thumbnail(const darkroom::Buffer& b, int size);
 
 }  // namespace editor

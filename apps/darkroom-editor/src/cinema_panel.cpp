@@ -30,7 +30,10 @@ CinemaPanel::CinemaPanel(const darkroom::Registry& registry, QWidget* parent) : 
     list_ = new QListWidget;
     list_->setViewMode(QListView::IconMode);
     list_->setIconSize(QSize(kThumb, kThumb));
+    list_->setGridSize(QSize(kThumb + 24, kThumb + 2 * fontMetrics().height() + 8));  // room for two lines of label
+    list_->setWordWrap(true);
     list_->setResizeMode(QListView::Adjust);
+    list_->setMovement(QListView::Static);
     list_->setUniformItemSizes(true);
     lay->addWidget(list_, 1);
     connect(list_, &QListWidget::currentRowChanged, this, [this](int r) {
@@ -91,9 +94,14 @@ bool CinemaPanel::open(const QString& path, QString* error) {
     }
     updating_ = true;
     list_->clear();
-    for (const auto& e : entries_) {
-        auto* item = new QListWidgetItem(e.label, list_);
-        item->setToolTip(e.parameters);
+    // A blank stand-in until the thumbnail arrives: items keep one size.
+    QPixmap blank(kThumb, kThumb);
+    blank.fill(QColor(60, 60, 64));
+    const QIcon waiting(blank);
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        auto* item = new QListWidgetItem(entries_[e].label, list_);
+        item->setToolTip(entries_[e].parameters);
+        if (e < kMaxThumbs) item->setIcon(waiting);
     }
     updating_ = false;
     startThumbnails();
@@ -171,6 +179,7 @@ void CinemaPanel::startThumbnails() {
                 QListWidgetItem* item = self->list_->item(int(e));
                 if (!item) return;
                 if (!thumb.isNull()) item->setIcon(QIcon(QPixmap::fromImage(thumb)));
+                item->setData(Qt::UserRole, !thumb.isNull());  // the thumbnail (not the stand-in) is shown
                 if (!problem.isEmpty()) {
                     ++self->failures_;
                     item->setToolTip(item->toolTip() + QStringLiteral("\n") + problem);

@@ -32,6 +32,8 @@ public:
     const std::vector<CinemaEntry>& entries() const { return entries_; }
     std::size_t currentEntry() const { return entry_; }
     void selectEntry(std::size_t entry);  // moves the controls and emits entryChosen
+    // One item per entry; its data(Qt::UserRole) turns true when the
+    // thumbnail replaced the grey stand-in.
     QListWidget* thumbnails() const { return list_; }
     // Controls per parameter column (a QSlider or a QComboBox), for tests.
     QWidget* control(const QString& column) const;

@@ -64,6 +64,16 @@ QStringList displayModes(const Buffer& b) {
     return modes;
 }
 
+QString preferredMode(const QStringList& modes) {
+    if (modes.isEmpty()) return {};
+    if (modes.contains(QStringLiteral("Colour"))) return QStringLiteral("Colour");
+    for (const QString& m : modes)
+        if (m.startsWith(QLatin1String("Channel ")) && m != QLatin1String("Channel Z") &&
+            m != QLatin1String("Channel AO") && m != QLatin1String("Channel A"))
+            return m;
+    return modes.front();
+}
+
 DisplaySpec displaySpec(const Buffer& b, const QString& mode) {
     DisplaySpec s;
     if (mode == QLatin1String("Colour")) {

@@ -18,6 +18,9 @@ namespace editor {
 // N.y, N.z) shown as 0.5 + 0.5 v, and every other channel as a scalar in
 // false colour ("AO" and "A" in grey).
 QStringList displayModes(const darkroom::Buffer& b);
+// The mode to show first: colour, else the first scalar that is not depth
+// or occlusion (a G-buffer's data), else the first mode.
+QString preferredMode(const QStringList& modes);
 
 struct DisplaySpec {
     enum class Kind { Colour, Vector, Scalar, None };

@@ -120,6 +120,8 @@ void Evaluation::onDone(const EvalResult& r) {
         }
         if (r.generation <= shownGeneration_) return;
     } else {
+        // An error of an edit already replaced (a half-made change) is noise.
+        if (!r.error.isEmpty() && r.generation != latest_.generation) return;
         // A full frame replaces a preview of the same edit, never a newer one.
         if (r.generation < shownGeneration_ || (r.generation == shownGeneration_ && shownLevel_ == 0)) return;
     }

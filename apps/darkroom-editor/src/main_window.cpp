@@ -172,7 +172,7 @@ QString MainWindow::addNode(const QString& type, std::optional<QPointF> scenePos
     scene_->clearSelection();
     if (NodeItem* item = scene_->nodeItem(name)) {
         item->setSelected(true);
-        graphView_->ensureVisible(item);
+        if (!scenePos) graphView_->ensureVisible(item);  // at the cursor it is in view already
     }
     return name;
 }
@@ -182,15 +182,25 @@ void MainWindow::scheduleEvaluation() {
     QString node = scene_->selectedNode();
     if (node.isEmpty() && g.node(shownNode_.toStdString())) node = shownNode_;
     if (node.isEmpty()) {
-        // Nothing chosen yet: the last node in dependency order with an image output.
+        // Nothing chosen yet: what the pipeline writes (the last output node
+        // fed an image), else the last node in dependency order with an
+        // image output.
+        QString sink;
         try {
             for (const auto& n : g.topologicalOrder()) {
                 const auto* x = g.node(n);
                 for (const auto& o : g.ports(*x).outputs)
                     if (o.isImage()) node = QString::fromStdString(n);
+                if (g.ports(*x).outputs.empty() && !x->placeholder)
+                    for (const auto& e : g.edgesInto(n)) {
+                        const auto* up = g.node(e.from.node);
+                        const auto* spec = up && !up->placeholder ? g.ports(*up).output(e.from.port) : nullptr;
+                        if (spec && spec->isImage()) sink = QString::fromStdString(n);
+                    }
             }
         } catch (const std::exception&) {
         }
+        if (!sink.isEmpty()) node = sink;
     }
     const darkroom::Node* n = g.node(node.toStdString());
     if (!n) {
@@ -281,18 +291,34 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         statusBar()->showMessage(tr("Several CinemaReader nodes: select the one the browser drives"), 8000);
         return;
     }
+    bool add = false;
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
-        reader = addNode(QStringLiteral("CinemaReader"));
-        if (reader.isEmpty()) return;
+        reader = doc_->uniqueName(QStringLiteral("CinemaReader"));
+        add = true;
     }
+    // One edit (and one evaluation) for adding the reader and pointing it at the entry.
     const QString err = doc_->edit(tr("Cinema entry %1").arg(parameters), [&](darkroom::Graph& gg) {
         const std::string n = reader.toStdString();
+        if (add) {
+            const QRectF used = scene_->itemsBoundingRect();
+            setNodePosition(gg.addNode(n, "CinemaReader"),
+                            gg.nodes().size() == 1 ? graphView_->mapToScene(graphView_->viewport()->rect().center()) -
+                                                         QPointF(NodeItem::width() / 2, 40)
+                                                   : QPointF(used.left(), used.bottom() + 60));
+        }
         const darkroom::Value* db = gg.node(n)->parameter("database");
         if (!db || QString::fromStdString(db->asString()) != database) gg.setParameter(n, "database", database.toStdString());
         gg.setParameter(n, "parameters", parameters.toStdString());
-    }, QStringLiteral("cinema:") + reader);
+    }, add ? QString() : QStringLiteral("cinema:") + reader);
     if (!err.isEmpty()) logMessage(err);
+    if (add) {
+        scene_->clearSelection();
+        if (NodeItem* item = scene_->nodeItem(reader)) {
+            item->setSelected(true);
+            graphView_->ensureVisible(item);
+        }
+    }
 }
 
 }  // namespace editor

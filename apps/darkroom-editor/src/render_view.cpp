@@ -56,7 +56,7 @@ void RenderView::setImage(darkroom::BufferPtr image, int level, std::uint64_t ta
     const QStringList modes = image_ ? displayModes(*image_) : QStringList();
     const bool newModes = modes != modes_;
     modes_ = modes;
-    if (!modes_.contains(mode_)) mode_ = modes_.isEmpty() ? QString() : modes_.front();
+    if (!modes_.contains(mode_)) mode_ = preferredMode(modes_);
     spec_ = image_ ? displaySpec(*image_, mode_) : DisplaySpec{};
     if (sizeChanged) fitted_ = true;
     if (fitted_) fit();
@@ -78,6 +78,13 @@ void RenderView::fit() {
     if (s.isEmpty() || width() <= 0) return;
     zoom_ = std::min(width() / s.width(), height() / s.height());
     offset_ = QPointF((width() - s.width() * zoom_) / 2, (height() - s.height() * zoom_) / 2);
+    update();
+}
+
+void RenderView::setView(double zoom, QPointF offset) {
+    zoom_ = std::clamp(zoom, 0.02, 64.0);
+    offset_ = offset;
+    fitted_ = false;
     update();
 }
 

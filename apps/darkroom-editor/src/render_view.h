@@ -32,6 +32,9 @@ public:
     void setMode(const QString& mode);
     void fit();
     double zoom() const { return zoom_; }  // screen pixels per full-resolution pixel
+    QPointF offset() const { return offset_; }
+    // Zoom and the widget position of the image's top-left corner.
+    void setView(double zoom, QPointF offset);
     // Widget position -> pixel of the shown image (may be outside it).
     QPoint pixelAt(QPointF widgetPos) const;
     // Channel textures uploaded and mapping passes run so far (tests: pan
