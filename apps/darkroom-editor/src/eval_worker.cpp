@@ -76,6 +76,7 @@ std::optional<EvalResult> EvalWorker::evaluate(const EvalJob& job) {
     r.level = job.level;
     r.generation = job.generation;
     r.predicted = job.predicted;
+    r.show = job.show;
     auto stale = [this, &job] { return stopping_ || stale_(job); };
     for (;;) {
         try {

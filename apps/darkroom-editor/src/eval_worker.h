@@ -28,6 +28,7 @@ struct EvalJob {
     std::uint64_t generation = 0;
     int level = 0;            // 0 = full resolution; k = every source at 1/2^k
     double predicted = -1;    // full-resolution seconds predicted for the dirty nodes
+    bool show = true;         // false: only fills the cache (its result is not shown)
 };
 
 struct EvalResult {
@@ -37,6 +38,7 @@ struct EvalResult {
     std::uint64_t generation = 0;
     FrameProfile profile;
     double predicted = -1;
+    bool show = true;
     QString error;            // empty on success
     QStringList errorNodes;   // nodes the error names (shown red)
 };

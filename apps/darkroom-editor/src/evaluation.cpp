@@ -77,7 +77,9 @@ void Evaluation::request(const darkroom::Graph& graph, const QString& node, cons
         full_->submit(job);
         return;
     }
-    job.level = chooseLevel(job.predicted < 0 ? 1.0 : job.predicted);
+    // One size for the whole drag; outside a drag each edit chooses afresh.
+    if (!interacting_ || level_ == 0) level_ = chooseLevel(job.predicted < 0 ? 1.0 : job.predicted);
+    job.level = level_;
     latestSettled_ = false;
     preview_->submit(job);
     // A pause of the hand also settles, even while the button is held.
@@ -101,14 +103,28 @@ void Evaluation::settle() {
     full_->submit(job);
 }
 
+void Evaluation::warmPreview(const EvalResult& full) {
+    // Only where previews will be used: the frame was slower than the budget.
+    if (budget_ <= 0 || full.profile.seconds <= budget_ || full.generation != latest_.generation) return;
+    EvalJob job = latest_;
+    // The size the next drag starts with, from what this frame cost.
+    level_ = chooseLevel(std::max(full.profile.seconds, 1e-3));
+    job.level = level_;
+    job.show = false;
+    preview_->submit(job);
+}
+
 void Evaluation::onDone(const EvalResult& r) {
+    if (!r.show) return;  // a warm-up: the cache is what it was for
     if (r.level > 0) {
-        // Learn how far the prediction was off at this size.
+        // Learn how far the prediction was off at this size, and coarsen a
+        // drag whose previews overrun the budget clearly.
         const double predicted = r.predicted > 0 ? r.predicted / std::pow(4.0, r.level) : 0;
         if (predicted > 0 && r.error.isEmpty()) {
             const double ratio = std::clamp(r.profile.seconds / predicted, 0.25, 16.0);
             previewCorrection_ = std::clamp(0.5 * previewCorrection_ + 0.5 * ratio, 0.25, 16.0);
         }
+        if (interacting_ && r.level == level_ && r.profile.seconds > 1.5 * budget_ && level_ < kMaxLevel) ++level_;
         // A preview that fails (or is older than what is shown) says
         // nothing the settled frame will not say better.
         if (!r.error.isEmpty()) {
@@ -128,6 +144,7 @@ void Evaluation::onDone(const EvalResult& r) {
     shownGeneration_ = r.generation;
     shownLevel_ = r.level;
     emit finished(r);
+    if (r.level == 0 && r.error.isEmpty()) warmPreview(r);
 }
 
 }  // namespace editor

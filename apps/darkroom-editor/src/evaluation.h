@@ -8,7 +8,12 @@
 //  - when the hand stops (the drag ends, or no new value for a moment) the
 //    latest request settles at full resolution;
 //  - a newer request cancels a full-resolution run in progress; previews are
-//    coalesced instead (the newest waiting one runs next).
+//    coalesced instead (the newest waiting one runs next);
+//  - the preview size stays fixed during a drag (a new size would resample
+//    the sources again), coarser only if a preview overran the budget;
+//  - after a slow full-resolution frame the preview evaluator is warmed in
+//    the background (sources read and downsampled), so the first drag step
+//    does not wait for the sources to be read.
 // Two workers, each with its own evaluator and cache: previews never evict
 // the full-resolution results, and a preview never waits behind a full run.
 #include "eval_worker.h"
@@ -40,6 +45,8 @@ public:
     // How long after the last value the frame settles at full resolution.
     void setSettleDelay(int ms) { settleDelayMs_ = ms; }
 
+    // The preview level chosen for the current or last drag (0: none).
+    int previewLevel() const { return level_; }
     // Executions of a node by the full-resolution and the preview evaluator.
     std::uint64_t executions(const QString& node) const;
     std::uint64_t previewExecutions(const QString& node) const;
@@ -53,6 +60,7 @@ private:
     void settle();
     void onDone(const EvalResult& r);
     int chooseLevel(double predicted) const;
+    void warmPreview(const EvalResult& full);
     bool isSource(const darkroom::Graph& g, const QString& node) const;
 
     EvalWorker* full_;
@@ -64,6 +72,7 @@ private:
     double budget_ = 0.05;
     int settleDelayMs_ = 150;
     double previewCorrection_ = 1.0;  // measured preview time / predicted, smoothed
+    int level_ = 0;                   // preview level of the current drag (0: none chosen)
     std::atomic<std::uint64_t> generation_{0};
     std::uint64_t shownGeneration_ = 0;
     int shownLevel_ = 0;

@@ -132,9 +132,19 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     // Defaults: a render view well over half the window, a graph strip
     // tall enough for a row of nodes at a readable zoom.
     resize(1560, 960);
-    resizeDocks({pd}, {210}, Qt::Horizontal);
-    resizeDocks({gd}, {380}, Qt::Vertical);
-    restoreLayout();
+    restored_ = restoreLayout();
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (shownOnce_) return;
+    shownOnce_ = true;
+    // Default proportions, for the size the window really got: the graph a
+    // strip of about a third of the height, the palette narrow.
+    if (!restored_) {
+        resizeDocks({dock("palette")}, {std::max(180, width() / 8)}, Qt::Horizontal);
+        resizeDocks({dock("graph")}, {std::max(220, height() * 3 / 8)}, Qt::Vertical);
+    }
 }
 
 MainWindow::~MainWindow() {

@@ -75,6 +75,7 @@ protected:
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
 
 private:
     void buildMenus();
@@ -101,6 +102,8 @@ private:
     QMenu* recentMenu_ = nullptr;
     QString shownNode_;
     QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
+    bool restored_ = false;   // the layout came from QSettings
+    bool shownOnce_ = false;
     std::uint64_t tag_ = 0;
     std::map<std::uint64_t, std::pair<std::uint64_t, int>> tags_;  // render tag -> generation, level
 };
