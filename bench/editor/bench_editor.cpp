@@ -46,7 +46,7 @@ struct Options {
     int steps = 40;
     int interval = 16;  // ms between moves: a 60 Hz hand
     int pixelsPerStep = 3;
-    int drags = 3;      // per value; the first is reported apart (cold preview cache)
+    int drags = 3;      // per value; the first (right after opening) is reported apart
 };
 
 struct Frame {
@@ -265,7 +265,7 @@ int main(int argc, char** argv) {
     cli.addOption({"size", "Capture resolution (square)", "PX", "1024"});
     cli.addOption({"steps", "Mouse moves per drag", "N", "40"});
     cli.addOption({"interval", "Milliseconds between moves", "MS", "16"});
-    cli.addOption({"drags", "Drags per value (the first is reported apart)", "N", "3"});
+    cli.addOption({"drags", "Drags per value (the first, right after opening, is reported apart)", "N", "3"});
     cli.addOption({"screenshot", "Only save a screenshot of the editor on the demo (the README's picture) and exit",
                    "PNG"});
     cli.addOption({"window", "Window size for --screenshot", "WxH", "1280x880"});
@@ -396,7 +396,7 @@ int main(int argc, char** argv) {
     }
     std::printf("# darkroom-editor input-to-pixels, demo pipeline at %d x %d\n\n", o.size, o.size);
     std::printf("opened and evaluated at full resolution in %.0f ms (cold: reading the three databases)\n", openMs);
-    std::printf("drag: %d moves of %d px every %d ms; %d drags per value, the first with a cold preview cache\n\n",
+    std::printf("drag: %d moves of %d px every %d ms; %d drags per value, the first right after opening\n\n",
                 o.steps, o.pixelsPerStep, o.interval, o.drags);
     std::printf("| value | drag | events | frames | preview size | preview compute median ms | input-to-pixels median ms | p90 ms | max ms | settle ms (compute ms) |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
@@ -408,7 +408,7 @@ int main(int argc, char** argv) {
             DragResult r;
             if (!bench.drag(t.node, t.port, i % 2 ? -t.direction : t.direction, &r)) return 1;
             std::printf("| %s | %s | %zu | %d | %s | %.1f | %.1f | %.1f | %.1f | %.0f (%.0f) |\n", qPrintable(t.label),
-                        i == 0 ? "1 (cold)" : qPrintable(QString::number(i + 1)), r.latencies.size(), r.frames,
+                        i == 0 ? "1 (first)" : qPrintable(QString::number(i + 1)), r.latencies.size(), r.frames,
                         qPrintable(levelsText(r.levels)), percentile(r.previewCompute, 0.5),
                         percentile(r.latencies, 0.5), percentile(r.latencies, 0.9), percentile(r.latencies, 1.0),
                         r.settleMs, r.settleCompute);
