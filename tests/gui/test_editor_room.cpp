@@ -131,17 +131,17 @@ void RoomTest::cinemaDockAppearsWithADatabase() {
 }
 
 void RoomTest::layoutIsRemembered() {
+    w_->resize(1300, 820);
+    QTest::qWait(50);
     const int graphHeight = w_->dock("graph")->height();
     w_->dock("palette")->hide();
     w_->resizeDocks({w_->dock("graph")}, {graphHeight + 120}, Qt::Vertical);
-    QCoreApplication::processEvents();
+    QTest::qWait(50);
     const int wanted = w_->dock("graph")->height();
     QVERIFY(std::abs(wanted - graphHeight) > 60);
-    w_->resize(1300, 820);
-    QCoreApplication::processEvents();
     QVERIFY(w_->close());  // closing saves the layout
     makeWindow();
-    QCoreApplication::processEvents();
+    QTest::qWait(50);
     QCOMPARE(w_->size(), QSize(1300, 820));
     QVERIFY(!w_->dock("palette")->isVisible());
     QVERIFY2(std::abs(w_->dock("graph")->height() - wanted) <= 4,

@@ -16,6 +16,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -132,13 +133,17 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     // Defaults: a render view well over half the window, a graph strip
     // tall enough for a row of nodes at a readable zoom.
     resize(1560, 960);
-    restored_ = restoreLayout();
+    // The saved size now; the dock layout once the window has that size
+    // (restoring it earlier lays the docks out for the default size).
+    QSettings s;
+    if (s.value("layout/version").toInt() == kLayoutVersion) restoreGeometry(s.value("layout/geometry").toByteArray());
 }
 
 void MainWindow::showEvent(QShowEvent* e) {
     QMainWindow::showEvent(e);
     if (shownOnce_) return;
     shownOnce_ = true;
+    restored_ = restoreLayout();
     // Default proportions, for the size the window really got: the graph a
     // strip of about a third of the height, the palette narrow.
     if (!restored_) {

@@ -61,7 +61,10 @@ public:
     // right of the existing nodes.
     QString addNode(const QString& type, std::optional<QPointF> scenePos = std::nullopt);
     void logMessage(const QString& text);
-    // Window geometry and dock layout to and from QSettings (closing saves).
+    // Bumped when docks are added or renamed: an older saved layout is ignored.
+    static constexpr int kLayoutVersion = 2;
+    // Window geometry and dock layout to and from QSettings (closing saves,
+    // the first show restores).
     void saveLayout() const;
     bool restoreLayout();
 

@@ -30,8 +30,6 @@ namespace editor {
 namespace {
 
 constexpr int kMaxRecent = 8;
-// Bumped when docks are added or renamed: an older saved layout is ignored.
-constexpr int kLayoutVersion = 2;
 const char* kPipelineFilter = "Pipelines (*.yaml *.yml);;All files (*)";
 
 bool isCinemaPath(const QString& p) {
