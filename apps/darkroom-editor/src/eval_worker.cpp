@@ -7,8 +7,9 @@
 
 namespace editor {
 
-EvalWorker::EvalWorker(bool cancelRunningOnSubmit, std::function<bool(const EvalJob&)> stale, QObject* parent)
-    : QObject(parent), cancelRunningOnSubmit_(cancelRunningOnSubmit), stale_(std::move(stale)),
+EvalWorker::EvalWorker(std::function<bool(const EvalJob&)> cancelOnSubmit, std::function<bool(const EvalJob&)> stale,
+                       QObject* parent)
+    : QObject(parent), cancelOnSubmit_(std::move(cancelOnSubmit)), stale_(std::move(stale)),
       context_(new QObject) {
     qRegisterMetaType<editor::EvalResult>();
     context_->moveToThread(&thread_);
@@ -33,7 +34,7 @@ void EvalWorker::submit(EvalJob job) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         pending_ = std::move(job);
-        cancel = running_ && cancelRunningOnSubmit_;
+        cancel = running_ && cancelOnSubmit_(running_job_);
         if (!posted_) {
             posted_ = true;
             QMetaObject::invokeMethod(context_, [this] { runPending(); }, Qt::QueuedConnection);
@@ -52,6 +53,7 @@ void EvalWorker::runPending() {
         job = std::move(*pending_);
         pending_.reset();
         running_ = true;
+        running_job_ = job;
     }
     const std::optional<EvalResult> result = evaluate(job);
     const bool deliver = !stopping_ && result;  // a cancelled job has nothing to say

@@ -1,10 +1,10 @@
 #pragma once
 // One evaluator on its own thread, fed with "the latest job": submitting
 // while a job waits replaces it (only the newest counts), and the worker
-// takes the newest job whenever it becomes free. The full-resolution worker
-// also cancels the job it is running when a newer one arrives; the preview
-// worker lets it finish, so a continuous drag still shows a frame every
-// preview time instead of cancelling each one before it lands.
+// takes the newest job whenever it becomes free. Whether a newer job also
+// cancels the one running is the owner's choice per running job: cancelling
+// long work that is stale saves seconds, while cancelling short work before
+// it lands would starve a continuous drag of frames.
 #include "evaluator_adapter.h"
 
 #include <darkroom/framework/graph.h>
@@ -47,8 +47,9 @@ class EvalWorker : public QObject {
     Q_OBJECT
 public:
     // `stale` tells whether a job is out of date (asked on the worker
-    // thread, also while it runs); `cancelRunningOnSubmit` as above.
-    EvalWorker(bool cancelRunningOnSubmit, std::function<bool(const EvalJob&)> stale,
+    // thread, also while it runs); `cancelOnSubmit` whether a newer job
+    // cancels the running one (asked on the owner's thread).
+    EvalWorker(std::function<bool(const EvalJob&)> cancelOnSubmit, std::function<bool(const EvalJob&)> stale,
                QObject* parent = nullptr);
     ~EvalWorker() override;
 
@@ -65,13 +66,14 @@ private:
     void runPending();  // on the worker thread
     std::optional<EvalResult> evaluate(const EvalJob& job);  // nullopt: cancelled
 
-    const bool cancelRunningOnSubmit_;
+    const std::function<bool(const EvalJob&)> cancelOnSubmit_;
     const std::function<bool(const EvalJob&)> stale_;
     EvaluatorAdapter adapter_;
     QThread thread_;
     QObject* context_;  // lives on thread_
     mutable std::mutex mutex_;
     std::optional<EvalJob> pending_;
+    EvalJob running_job_;  // what runs now (valid while running_)
     bool posted_ = false;
     bool running_ = false;
     int undelivered_ = 0;

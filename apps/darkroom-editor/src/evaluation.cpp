@@ -12,10 +12,15 @@ constexpr double kBudgetShare = 0.8;  // aim below the budget: timings vary
 }  // namespace
 
 Evaluation::Evaluation(QObject* parent) : QObject(parent) {
-    full_ = new EvalWorker(true, [this](const EvalJob& j) { return j.generation != generation_; }, this);
+    // A newer edit cancels a full-resolution run that is slow (over the
+    // budget, or of unknown cost); a quick one finishes and is shown, so
+    // cheap pipelines follow a drag frame by frame without previews.
+    auto slow = [this](const EvalJob& j) { return j.predicted < 0 || j.predicted > budget_; };
+    full_ = new EvalWorker(slow, [this, slow](const EvalJob& j) { return j.generation != generation_ && slow(j); },
+                           this);
     // A preview is never cancelled for a newer value (see the header); it
     // only stops when the editor closes.
-    preview_ = new EvalWorker(false, [](const EvalJob&) { return false; }, this);
+    preview_ = new EvalWorker([](const EvalJob&) { return false; }, [](const EvalJob&) { return false; }, this);
     connect(full_, &EvalWorker::done, this, &Evaluation::onDone);
     connect(preview_, &EvalWorker::done, this, &Evaluation::onDone);
     settleTimer_.setSingleShot(true);

@@ -7,8 +7,9 @@
 //    budget, corrected by what previews actually took;
 //  - when the hand stops (the drag ends, or no new value for a moment) the
 //    latest request settles at full resolution;
-//  - a newer request cancels a full-resolution run in progress; previews are
-//    coalesced instead (the newest waiting one runs next);
+//  - a newer request cancels a full-resolution run in progress when that run
+//    is slow (predicted over the budget, or of unknown cost); quick runs and
+//    previews are coalesced instead (the newest waiting one runs next);
 //  - the preview size stays fixed during a drag (a new size would resample
 //    the sources again), coarser only if a preview overran the budget;
 //  - after a slow full-resolution frame the preview evaluator is warmed in
@@ -69,7 +70,7 @@ private:
     EvalJob latest_;
     bool latestSettled_ = true;  // the latest request went (or goes) to full resolution
     bool interacting_ = false;
-    double budget_ = 0.05;
+    std::atomic<double> budget_{0.05};  // also read by the full worker's thread
     int settleDelayMs_ = 150;
     double previewCorrection_ = 1.0;  // measured preview time / predicted, smoothed
     int level_ = 0;                   // preview level of the current drag (0: none chosen)
