@@ -12,8 +12,11 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
-  # the editor, and its GUI tests under a virtual X server
-  qt6-base-dev qt6-base-dev-tools libgl-dev xvfb xauth
+  # the editor (Qt Widgets, OpenGL and OpenGLWidgets, QTest), the X platform
+  # plugin and Mesa's software OpenGL (llvmpipe), fonts for its labels, and a
+  # virtual X server for the GUI tests
+  qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-qpa-plugins libgl-dev
+  libgl1-mesa-dri fonts-dejavu-core xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)

@@ -8,4 +8,16 @@ export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
 export DARKROOM_CMAKE_ARGS="-DDARKROOM_WERROR=ON ${DARKROOM_CMAKE_ARGS:-}"
 "$root/scripts/build.sh"
 cd "$DARKROOM_BUILD_DIR"
+# The editor is part of what is tested: fail loudly if it was not built or
+# its GUI tests were not registered (a skipped editor once passed CI).
+if [ ! -x bin/darkroom-editor ]; then
+  echo "test.sh: bin/darkroom-editor was not built (see the CMake output about Qt 6)" >&2
+  exit 1
+fi
+gui_tests=$(ctest -N -L gui | sed -n 's/^Total Tests: //p')
+if [ "${gui_tests:-0}" -eq 0 ]; then
+  echo "test.sh: no GUI tests are registered (ctest -L gui lists none)" >&2
+  exit 1
+fi
 ctest --output-on-failure -j "$(nproc)" --timeout 900
+echo "test.sh: the editor was built and its ${gui_tests} GUI tests (ctest -L gui) were part of this run"

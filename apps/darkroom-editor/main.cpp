@@ -5,6 +5,7 @@
 #include <darkroom/framework/registry.h>
 
 #include <QApplication>
+#include <QTimer>
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
@@ -14,10 +15,12 @@ int main(int argc, char** argv) {
     const auto problems = registry.loadPlugins(darkroom::Registry::defaultSearchPath());
     editor::MainWindow w(registry, problems);
     w.show();
-    const QStringList args = QApplication::arguments().mid(1);
-    for (const QString& a : args) {
-        if (a.endsWith(".cdb") || a.endsWith(".cdb/")) w.openCinema(a);
-        else w.openPipeline(a);
-    }
+    // Opened once the window has its final size, so the graph is fitted to it.
+    QTimer::singleShot(0, &w, [&w] {
+        for (const QString& a : QApplication::arguments().mid(1)) {
+            if (a.endsWith(".cdb") || a.endsWith(".cdb/")) w.openCinema(a);
+            else w.openPipeline(a);
+        }
+    });
     return app.exec();
 }

@@ -1,8 +1,7 @@
 #include "cinema_panel.h"
 
-#include "display.h"
-
-#include <darkroom/framework/image_io.h>
+#include <darkroom/framework/cinema/composable.h>
+#include <darkroom/framework/registry.h>
 
 #include <QApplication>
 #include <QComboBox>
@@ -21,7 +20,7 @@ constexpr int kThumb = 72;
 constexpr std::size_t kMaxThumbs = 500;  // beyond this the list is text only
 }  // namespace
 
-CinemaPanel::CinemaPanel(QWidget* parent) : QWidget(parent) {
+CinemaPanel::CinemaPanel(const darkroom::Registry& registry, QWidget* parent) : QWidget(parent), registry_(registry) {
     auto* lay = new QVBoxLayout(this);
     title_ = new QLabel(tr("No database open (File > Open Cinema database, or drop a .cdb here)"));
     title_->setWordWrap(true);
@@ -31,11 +30,14 @@ CinemaPanel::CinemaPanel(QWidget* parent) : QWidget(parent) {
     list_ = new QListWidget;
     list_->setViewMode(QListView::IconMode);
     list_->setIconSize(QSize(kThumb, kThumb));
+    list_->setGridSize(QSize(kThumb + 24, kThumb + 2 * fontMetrics().height() + 8));  // room for two lines of label
+    list_->setWordWrap(true);
     list_->setResizeMode(QListView::Adjust);
+    list_->setMovement(QListView::Static);
     list_->setUniformItemSizes(true);
     lay->addWidget(list_, 1);
     connect(list_, &QListWidget::currentRowChanged, this, [this](int r) {
-        if (!updating_ && r >= 0) selectRow(std::size_t(r));
+        if (!updating_ && r >= 0) selectEntry(std::size_t(r));
     });
 }
 
@@ -50,18 +52,30 @@ QWidget* CinemaPanel::control(const QString& column) const {
 }
 
 bool CinemaPanel::open(const QString& path, QString* error) {
+    std::vector<CinemaEntry> entries;
     try {
-        db_ = darkroom::CinemaDatabase::open(path.toStdString());
+        auto db = darkroom::CinemaDatabase::open(path.toStdString());
+        entries = cinemaEntries(db);
+        db_ = std::move(db);
     } catch (const std::exception& e) {
         if (error) *error = QString::fromStdString(e.what());
         return false;
     }
+    if (stop_) *stop_ = true;
+    entries_ = std::move(entries);
+    composable_ = darkroom::isComposableImageSet(*db_);
+    failures_ = 0;
     while (form_->rowCount()) form_->removeRow(0);
     controls_.clear();
-    title_->setText(tr("%1: %2 entries").arg(QFileInfo(QString::fromStdString(db_->path())).fileName())
-                        .arg(db_->rowCount()));
+    title_->setText(tr("%1: %2 entries%3")
+                        .arg(QFileInfo(QString::fromStdString(db_->path())).fileName())
+                        .arg(entries_.size())
+                        .arg(composable_ ? tr(" (layers of a composable image set)") : QString()));
     for (std::size_t c : db_->parameterColumns()) {
         const auto& col = db_->columns()[c];
+        // In a composable image set the CIS columns describe channels and
+        // layers; the browser's entries are layers, chosen by the others.
+        if (composable_ && QString::fromStdString(col.name).startsWith(QLatin1String("CIS"))) continue;
         QWidget* w;
         if (col.numeric && col.distinct.size() > 1) {
             auto* s = new QSlider(Qt::Horizontal);
@@ -80,27 +94,35 @@ bool CinemaPanel::open(const QString& path, QString* error) {
     }
     updating_ = true;
     list_->clear();
-    for (std::size_t r = 0; r < db_->rowCount(); ++r)
-        list_->addItem(QString::fromStdString(db_->entryName(r)));
+    // A blank stand-in until the thumbnail arrives: items keep one size.
+    QPixmap blank(kThumb, kThumb);
+    blank.fill(QColor(60, 60, 64));
+    const QIcon waiting(blank);
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        auto* item = new QListWidgetItem(entries_[e].label, list_);
+        item->setToolTip(entries_[e].parameters);
+        if (e < kMaxThumbs) item->setIcon(waiting);
+    }
     updating_ = false;
     startThumbnails();
-    selectRow(0);
+    selectEntry(0);
     return true;
 }
 
-void CinemaPanel::selectRow(std::size_t row) {
-    if (!db_ || row >= db_->rowCount()) return;
-    row_ = row;
+void CinemaPanel::selectEntry(std::size_t entry) {
+    if (!db_ || entry >= entries_.size()) return;
+    entry_ = entry;
     updating_ = true;
+    const std::size_t row = entries_[entry].row;
     for (auto& [c, w] : controls_) {
         const auto& col = db_->columns()[c];
         const int i = int(std::find(col.distinct.begin(), col.distinct.end(), db_->cell(row, c)) - col.distinct.begin());
         if (auto* s = qobject_cast<QSlider*>(w)) s->setValue(i);
         else if (auto* b = qobject_cast<QComboBox*>(w)) b->setCurrentIndex(i);
     }
-    list_->setCurrentRow(int(row));
+    list_->setCurrentRow(int(entry));
     updating_ = false;
-    emit entryChosen(QString::fromStdString(db_->path()), QString::fromStdString(db_->formatParameters(row)));
+    emit entryChosen(QString::fromStdString(db_->path()), entries_[entry].parameters);
 }
 
 void CinemaPanel::controlsChanged() {
@@ -114,7 +136,19 @@ void CinemaPanel::controlsChanged() {
         if (i >= 0 && std::size_t(i) < col.distinct.size()) q.push_back({col.name, col.distinct[std::size_t(i)]});
     }
     try {
-        selectRow(db_->find(q).row);
+        // The same matching as CinemaReader's `parameters` (numbers snap).
+        const std::size_t row = db_->find(q).row;
+        for (std::size_t e = 0; e < entries_.size(); ++e) {
+            const bool inEntry = composable_ ? db_->cell(row, db_->column("CISLayer")) ==
+                                                       db_->cell(entries_[e].row, db_->column("CISLayer")) &&
+                                                   db_->cell(row, db_->column("CISImage")) ==
+                                                       db_->cell(entries_[e].row, db_->column("CISImage"))
+                                             : entries_[e].row == row;
+            if (inEntry) {
+                selectEntry(e);
+                return;
+            }
+        }
     } catch (const std::exception& e) {
         // A combination the sampling does not contain: say so, keep the entry.
         title_->setText(QString::fromStdString(e.what()));
@@ -122,34 +156,34 @@ void CinemaPanel::controlsChanged() {
 }
 
 void CinemaPanel::startThumbnails() {
-    if (stop_) *stop_ = true;
     stop_ = std::make_shared<std::atomic<bool>>(false);
-    std::vector<std::string> paths;
-    for (std::size_t r = 0; r < std::min(db_->rowCount(), kMaxThumbs); ++r) {
-        try {
-            paths.push_back(db_->productPath(r));
-        } catch (const std::exception&) {
-            paths.emplace_back();
-        }
-    }
+    std::vector<QString> parameters;
+    for (std::size_t e = 0; e < std::min(entries_.size(), kMaxThumbs); ++e) parameters.push_back(entries_[e].parameters);
     QPointer<CinemaPanel> self(this);
     auto stop = stop_;
-    QThreadPool::globalInstance()->start([self, stop, paths] {
-        for (std::size_t r = 0; r < paths.size() && !*stop; ++r) {
+    const darkroom::Registry* registry = &registry_;
+    const std::string database = db_->path();
+    QThreadPool::globalInstance()->start([self, stop, parameters, registry, database] {
+        CinemaEntryReader reader(*registry, database);
+        for (std::size_t e = 0; e < parameters.size() && !*stop; ++e) {
             QImage thumb;
+            QString problem;
             try {
-                const auto img = darkroom::readImage(paths[r]);
-                const auto modes = displayModes(*img);
-                if (!modes.isEmpty())
-                    thumb = renderDisplay(*img, modes.front()).scaled(kThumb, kThumb, Qt::KeepAspectRatio,
-                                                                      Qt::SmoothTransformation);
-            } catch (const std::exception&) {
-                continue;  // not an image readImage knows (.npz, .vti): no thumbnail
+                thumb = thumbnail(*reader.read(parameters[e]), kThumb);
+            } catch (const std::exception& x) {
+                problem = QString::fromStdString(x.what());
             }
             // Posted to the application object: the panel may be gone by now.
-            QMetaObject::invokeMethod(qApp, [self, stop, r, thumb] {
+            QMetaObject::invokeMethod(qApp, [self, stop, e, thumb, problem] {
                 if (!self || *stop) return;
-                if (auto* item = self->list_->item(int(r))) item->setIcon(QIcon(QPixmap::fromImage(thumb)));
+                QListWidgetItem* item = self->list_->item(int(e));
+                if (!item) return;
+                if (!thumb.isNull()) item->setIcon(QIcon(QPixmap::fromImage(thumb)));
+                item->setData(Qt::UserRole, !thumb.isNull());  // the thumbnail (not the stand-in) is shown
+                if (!problem.isEmpty()) {
+                    ++self->failures_;
+                    item->setToolTip(item->toolTip() + QStringLiteral("\n") + problem);
+                }
             }, Qt::QueuedConnection);
         }
     });

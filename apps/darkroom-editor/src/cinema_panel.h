@@ -1,8 +1,11 @@
 #pragma once
 // The Cinema browser: open a .cdb, choose an entry with one slider (numeric)
 // or combo (text) per parameter column, or by clicking its thumbnail.
-// Thumbnails are made on a pool thread, one at a time, and arrive as they
-// are ready; opening another database drops the rest.
+// Entries and thumbnails come from the pipeline's own CinemaReader
+// (cinema_entries.h). Thumbnails are made on a pool thread, one at a time,
+// and arrive as they are ready; opening another database drops the rest.
+#include "cinema_entries.h"
+
 #include <darkroom/framework/cinema/database.h>
 
 #include <QWidget>
@@ -15,36 +18,47 @@ class QLabel;
 class QListWidget;
 class QFormLayout;
 
+namespace darkroom { class Registry; }
+
 namespace editor {
 
 class CinemaPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit CinemaPanel(QWidget* parent = nullptr);
+    explicit CinemaPanel(const darkroom::Registry& registry, QWidget* parent = nullptr);
     ~CinemaPanel() override;
     bool open(const QString& path, QString* error);
     const darkroom::CinemaDatabase* database() const { return db_ ? &*db_ : nullptr; }
-    std::size_t currentRow() const { return row_; }
-    void selectRow(std::size_t row);  // moves the controls and emits entryChosen
+    const std::vector<CinemaEntry>& entries() const { return entries_; }
+    std::size_t currentEntry() const { return entry_; }
+    void selectEntry(std::size_t entry);  // moves the controls and emits entryChosen
+    // One item per entry; its data(Qt::UserRole) turns true when the
+    // thumbnail replaced the grey stand-in.
     QListWidget* thumbnails() const { return list_; }
     // Controls per parameter column (a QSlider or a QComboBox), for tests.
     QWidget* control(const QString& column) const;
+    // Entries whose thumbnail failed, with CinemaReader's message (tooltips).
+    int thumbnailFailures() const { return failures_; }
 
 signals:
-    // The database folder and the entry as "name=value, ..." for CinemaReader.
+    // The database folder and the entry as CinemaReader's `parameters`.
     void entryChosen(const QString& database, const QString& parameters);
 
 private:
     void controlsChanged();
     void startThumbnails();
+    const darkroom::Registry& registry_;
     std::optional<darkroom::CinemaDatabase> db_;
-    std::size_t row_ = 0;
+    std::vector<CinemaEntry> entries_;
+    std::size_t entry_ = 0;
+    bool composable_ = false;
     QLabel* title_;
     QFormLayout* form_;
     QListWidget* list_;
     std::vector<std::pair<std::size_t, QWidget*>> controls_;  // column, control
     std::shared_ptr<std::atomic<bool>> stop_;
     bool updating_ = false;
+    int failures_ = 0;
 };
 
 }  // namespace editor

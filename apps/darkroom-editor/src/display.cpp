@@ -15,7 +15,10 @@ namespace {
 using darkroom::Buffer;
 
 int byte(float v) { return std::clamp(int(std::lround(v * 255.0f)), 0, 255); }
-int srgbByte(float linear) { return byte(darkroom::linearToSrgb(std::clamp(linear, 0.0f, 1.0f))); }
+int srgbByte(float linear) {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    return byte(darkroom::linearToSrgb(std::min(linear, 1.0f)));
+}
 
 std::vector<float> channelValues(const Buffer& b, const std::string& name) {
     std::vector<float> v(b.pixelCount());
@@ -26,10 +29,15 @@ std::vector<float> channelValues(const Buffer& b, const std::string& name) {
 }
 
 // Range over finite values; for depth, infinite background is left out.
-std::pair<float, float> finiteRange(const std::vector<float>& v) {
+std::pair<float, float> finiteRange(const Buffer& b, const std::string& name) {
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
-    for (float x : v)
-        if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+    const std::size_t n = b.pixelCount();
+    if (const float* f = b.hostFloat(name)) {
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::isfinite(f[i])) lo = std::min(lo, f[i]), hi = std::max(hi, f[i]);
+    } else if (const std::uint32_t* u = b.hostUInt(name)) {
+        for (std::size_t i = 0; i < n; ++i) lo = std::min(lo, float(u[i])), hi = std::max(hi, float(u[i]));
+    }
     if (lo > hi) return {0.0f, 1.0f};
     if (lo == hi) hi = lo + 1.0f;
     return {lo, hi};
@@ -56,51 +64,92 @@ QStringList displayModes(const Buffer& b) {
     return modes;
 }
 
+QString preferredMode(const QStringList& modes) {
+    if (modes.isEmpty()) return {};
+    if (modes.contains(QStringLiteral("Colour"))) return QStringLiteral("Colour");
+    for (const QString& m : modes)
+        if (m.startsWith(QLatin1String("Channel ")) && m != QLatin1String("Channel Z") &&
+            m != QLatin1String("Channel AO") && m != QLatin1String("Channel A"))
+            return m;
+    return modes.front();
+}
+
+DisplaySpec displaySpec(const Buffer& b, const QString& mode) {
+    DisplaySpec s;
+    if (mode == QLatin1String("Colour")) {
+        s.kind = DisplaySpec::Kind::Colour;
+        if (b.hasChannel("R")) s.channels = {"R", "G", "B"};
+        else s.channels = {"Y", "Y", "Y"};
+        if (b.hasChannel("A")) s.alpha = "A";
+    } else if (mode.startsWith(QLatin1String("Vector "))) {
+        s.kind = DisplaySpec::Kind::Vector;
+        const std::string base = mode.mid(7).toStdString();
+        s.channels = {base + ".x", base + ".y", base + ".z"};
+    } else if (mode == QLatin1String("Depth Z") || mode.startsWith(QLatin1String("Channel "))) {
+        s.kind = DisplaySpec::Kind::Scalar;
+        const bool depth = mode == QLatin1String("Depth Z");
+        const std::string name = depth ? "Z" : mode.mid(8).toStdString();
+        s.channels = {name};
+        s.invert = depth;
+        s.grey = depth || name == "AO" || name == "A";
+        if (name == "AO" || name == "A") s.low = 0, s.high = 1;
+        else std::tie(s.low, s.high) = finiteRange(b, name);
+    }
+    for (const auto& c : s.channels)
+        if (!b.hasChannel(c)) return {};
+    return s;
+}
+
+const std::array<std::array<unsigned char, 4>, 256>& falseColourTable() {
+    static const auto table = [] {
+        std::array<std::array<unsigned char, 4>, 256> t{};
+        const auto colours = darkroom::loadColorMap("viridis").table(256);
+        for (std::size_t i = 0; i < 256; ++i)
+            t[i] = {static_cast<unsigned char>(srgbByte(colours[i].r)), static_cast<unsigned char>(srgbByte(colours[i].g)),
+                    static_cast<unsigned char>(srgbByte(colours[i].b)), 255};
+        return t;
+    }();
+    return table;
+}
+
 QImage renderDisplay(const Buffer& b, const QString& mode) {
     const int w = b.width(), h = b.height();
-    QImage img(w, h, QImage::Format_ARGB32);
+    QImage img(std::max(w, 1), std::max(h, 1), QImage::Format_ARGB32);
     img.fill(Qt::black);
-    if (w <= 0 || h <= 0) return img;
+    const DisplaySpec s = displaySpec(b, mode);
+    if (w <= 0 || h <= 0 || s.kind == DisplaySpec::Kind::None) return img;
     const std::size_t n = b.pixelCount();
     auto put = [&](std::size_t i, int r, int g, int bl, int a) {
         reinterpret_cast<QRgb*>(img.scanLine(int(i / w)))[i % w] = qRgba(r, g, bl, a);
     };
-    if (mode == QLatin1String("Colour")) {
-        const bool grey = !b.hasChannel("R");
-        const auto r = channelValues(b, grey ? "Y" : "R");
-        const auto g = grey ? r : channelValues(b, "G");
-        const auto bb = grey ? r : channelValues(b, "B");
-        const bool alpha = b.hasChannel("A");
-        const auto a = alpha ? channelValues(b, "A") : std::vector<float>();
+    if (s.kind == DisplaySpec::Kind::Colour) {
+        const auto r = channelValues(b, s.channels[0]), g = channelValues(b, s.channels[1]),
+                   bb = channelValues(b, s.channels[2]);
+        const auto a = s.alpha.empty() ? std::vector<float>() : channelValues(b, s.alpha);
         for (std::size_t i = 0; i < n; ++i)
-            put(i, srgbByte(r[i]), srgbByte(g[i]), srgbByte(bb[i]), alpha ? byte(a[i]) : 255);
-    } else if (mode.startsWith(QLatin1String("Vector "))) {
-        const std::string base = mode.mid(7).toStdString();
-        const auto x = channelValues(b, base + ".x"), y = channelValues(b, base + ".y"),
-                   z = channelValues(b, base + ".z");
+            put(i, srgbByte(r[i]), srgbByte(g[i]), srgbByte(bb[i]), a.empty() ? 255 : byte(a[i]));
+    } else if (s.kind == DisplaySpec::Kind::Vector) {
+        const auto x = channelValues(b, s.channels[0]), y = channelValues(b, s.channels[1]),
+                   z = channelValues(b, s.channels[2]);
         for (std::size_t i = 0; i < n; ++i)
             put(i, byte(0.5f + 0.5f * x[i]), byte(0.5f + 0.5f * y[i]), byte(0.5f + 0.5f * z[i]),
                 std::isfinite(x[i]) ? 255 : 0);
     } else {
-        const bool depth = mode == QLatin1String("Depth Z");
-        const std::string name = depth ? "Z" : mode.mid(8).toStdString();
-        const auto v = channelValues(b, name);
-        const bool grey = depth || name == "AO" || name == "A";
-        const auto [lo, hi] = (name == "AO" || name == "A") ? std::pair<float, float>(0, 1) : finiteRange(v);
-        static const auto table = darkroom::loadColorMap("viridis").table(256);
+        const auto v = channelValues(b, s.channels[0]);
+        const auto& table = falseColourTable();
         for (std::size_t i = 0; i < n; ++i) {
             if (!std::isfinite(v[i])) {
                 put(i, 0, 0, 0, 0);  // background (infinite depth, NaN) shows the checkerboard
                 continue;
             }
-            float t = std::clamp((v[i] - lo) / (hi - lo), 0.0f, 1.0f);
-            if (depth) t = 1.0f - t;  // near is bright
-            if (grey) {
+            float t = std::clamp((v[i] - s.low) / (s.high - s.low), 0.0f, 1.0f);
+            if (s.invert) t = 1.0f - t;  // near is bright
+            if (s.grey) {
                 const int c = byte(t);
                 put(i, c, c, c, 255);
             } else {
                 const auto& c = table[std::size_t(std::lround(t * 255.0f))];
-                put(i, srgbByte(c.r), srgbByte(c.g), srgbByte(c.b), 255);
+                put(i, c[0], c[1], c[2], 255);
             }
         }
     }

@@ -1,70 +1,155 @@
 #include "evaluation.h"
 
-#include <darkroom/error.h>
-
-#include <QElapsedTimer>
+#include <algorithm>
+#include <cmath>
 
 namespace editor {
+namespace {
 
-Evaluation::Evaluation(QObject* parent)
-    : QObject(parent), worker_(new QObject), evaluator_(std::make_shared<darkroom::Evaluator>()) {
-    qRegisterMetaType<editor::EvalResult>();
-    worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-    thread_.start();
+constexpr int kMaxLevel = 5;          // 1/32 of each side: 1024 px becomes 32
+constexpr double kBudgetShare = 0.8;  // aim below the budget: timings vary
+
+}  // namespace
+
+Evaluation::Evaluation(QObject* parent) : QObject(parent) {
+    // A newer edit cancels a full-resolution run that is slow (over the
+    // budget, or of unknown cost); a quick one finishes and is shown, so
+    // cheap pipelines follow a drag frame by frame without previews.
+    auto slow = [this](const EvalJob& j) { return j.predicted < 0 || j.predicted > budget_; };
+    full_ = new EvalWorker(slow, [this, slow](const EvalJob& j) { return j.generation != generation_ && slow(j); },
+                           this);
+    // A preview is never cancelled for a newer value (see the header); it
+    // only stops when the editor closes.
+    preview_ = new EvalWorker([](const EvalJob&) { return false; }, [](const EvalJob&) { return false; }, this);
+    connect(full_, &EvalWorker::done, this, &Evaluation::onDone);
+    connect(preview_, &EvalWorker::done, this, &Evaluation::onDone);
+    settleTimer_.setSingleShot(true);
+    connect(&settleTimer_, &QTimer::timeout, this, &Evaluation::settle);
 }
 
 Evaluation::~Evaluation() {
-    ++generation_;
-    evaluator_->cancel();
-    thread_.quit();
-    thread_.wait();
+    ++generation_;  // everything running is stale now
+    delete full_;
+    delete preview_;
 }
 
+bool Evaluation::busy() const { return full_->busy() || preview_->busy() || settleTimer_.isActive(); }
+
 std::uint64_t Evaluation::executions(const QString& node) const {
-    return evaluator_->executions(node.toStdString());
+    return full_->adapter().executions(node.toStdString());
+}
+
+std::uint64_t Evaluation::previewExecutions(const QString& node) const {
+    return preview_->adapter().executions(node.toStdString());
+}
+
+bool Evaluation::isSource(const darkroom::Graph& g, const QString& node) const {
+    for (const auto& e : g.edgesInto(node.toStdString())) {
+        const darkroom::Node* up = g.node(e.from.node);
+        const darkroom::PortSpec* spec = up && !up->placeholder ? g.ports(*up).output(e.from.port) : nullptr;
+        if (spec && spec->isImage()) return false;
+    }
+    return true;
+}
+
+int Evaluation::chooseLevel(double predicted) const {
+    // Work downstream of the sources scales with the pixel count: each level
+    // quarters it. The correction carries what previews really took.
+    const double full = std::max(predicted, 1e-6) * previewCorrection_;
+    for (int k = 1; k < kMaxLevel; ++k)
+        if (full / std::pow(4.0, k) <= kBudgetShare * budget_) return k;
+    return kMaxLevel;
 }
 
 void Evaluation::request(const darkroom::Graph& graph, const QString& node, const QString& port,
                          const QString& inputBase) {
-    const std::uint64_t gen = ++generation_;
-    evaluator_->cancel();  // the running job stops at its next check
-    ++pending_;
+    EvalJob job;
+    job.graph = std::make_shared<const darkroom::Graph>(graph);
+    job.node = node;
+    job.port = port;
+    job.inputBase = inputBase;
+    job.generation = ++generation_;  // makes a full run in progress stale
+    job.predicted = full_->adapter().predictSeconds(graph, node.toStdString());
+    latest_ = job;
     emit started();
-    auto copy = std::make_shared<darkroom::Graph>(graph);
-    auto evaluator = evaluator_;
-    QMetaObject::invokeMethod(worker_, [=, this] {
-        EvalResult r;
-        r.node = node;
-        bool cancelled = gen != generation_;  // a newer request is queued behind us
-        if (!cancelled) {
-            QElapsedTimer t;
-            t.start();
-            darkroom::EvaluatorOptions o = evaluator->options();
-            o.inputBase = inputBase.toStdString();
-            evaluator->setOptions(o);
-            try {
-                r.image = evaluator->evaluateImage(*copy, node.toStdString(), port.toStdString());
-            } catch (const darkroom::Cancelled&) {
-                cancelled = true;
-            } catch (const darkroom::GraphError& e) {
-                r.error = QString::fromStdString(e.what());
-                for (const auto& d : e.diagnostics())
-                    if (!d.node.empty()) r.errorNodes << QString::fromStdString(d.node);
-            } catch (const std::exception& e) {
-                r.error = QString::fromStdString(e.what());
-                for (const auto& n : copy->nodes())
-                    if (r.error.contains(QString::fromStdString("node '" + n.name + "'")))
-                        r.errorNodes << QString::fromStdString(n.name);
-            }
-            r.seconds = t.elapsed() / 1000.0;
+
+    // Nothing known about the cost (a pipeline just opened): the full frame
+    // directly, since a preview would read the same sources first.
+    const bool slow = job.predicted < 0 ? interacting_ : job.predicted > budget_;
+    if (budget_ <= 0 || !slow || isSource(graph, node)) {
+        settleTimer_.stop();
+        latestSettled_ = true;
+        full_->submit(job);
+        return;
+    }
+    // One size for the whole drag; outside a drag each edit chooses afresh.
+    if (!interacting_ || level_ == 0) level_ = chooseLevel(job.predicted < 0 ? 1.0 : job.predicted);
+    job.level = level_;
+    latestSettled_ = false;
+    preview_->submit(job);
+    // A pause of the hand also settles, even while the button is held.
+    settleTimer_.start(interacting_ ? 2 * settleDelayMs_ : settleDelayMs_);
+}
+
+void Evaluation::setInteracting(bool on) {
+    if (on == interacting_) return;
+    interacting_ = on;
+    if (!on) {
+        settleTimer_.stop();
+        settle();
+    }
+}
+
+void Evaluation::settle() {
+    if (latestSettled_ || !latest_.graph) return;
+    latestSettled_ = true;
+    EvalJob job = latest_;
+    job.level = 0;
+    full_->submit(job);
+}
+
+void Evaluation::warmPreview(const EvalResult& full) {
+    // Only where previews will be used: the frame was slower than the budget.
+    if (budget_ <= 0 || full.profile.seconds <= budget_ || full.generation != latest_.generation) return;
+    EvalJob job = latest_;
+    // The size the next drag starts with, from what this frame cost.
+    level_ = chooseLevel(std::max(full.profile.seconds, 1e-3));
+    job.level = level_;
+    job.show = false;
+    preview_->submit(job);
+}
+
+void Evaluation::onDone(const EvalResult& r) {
+    if (!r.show) return;  // a warm-up: the cache is what it was for
+    if (r.level > 0) {
+        // Learn how far the prediction was off at this size, and coarsen a
+        // drag whose previews overrun the budget clearly.
+        const double predicted = r.predicted > 0 ? r.predicted / std::pow(4.0, r.level) : 0;
+        if (predicted > 0 && r.error.isEmpty()) {
+            const double ratio = std::clamp(r.profile.seconds / predicted, 0.25, 16.0);
+            previewCorrection_ = std::clamp(0.5 * previewCorrection_ + 0.5 * ratio, 0.25, 16.0);
         }
-        // Queued to the UI thread; dropped by Qt if this object is gone.
-        QMetaObject::invokeMethod(this, [this, r, cancelled, gen] {
-            --pending_;
-            if (!cancelled && gen == generation_) emit finished(r);
-        }, Qt::QueuedConnection);
-    }, Qt::QueuedConnection);
+        if (interacting_ && r.level == level_ && r.profile.seconds > 1.5 * budget_ && level_ < kMaxLevel) ++level_;
+        // A preview that fails (or is older than what is shown) says
+        // nothing the settled frame will not say better.
+        if (!r.error.isEmpty()) {
+            if (r.generation == latest_.generation) {
+                settleTimer_.stop();
+                settle();
+            }
+            return;
+        }
+        if (r.generation <= shownGeneration_) return;
+    } else {
+        // An error of an edit already replaced (a half-made change) is noise.
+        if (!r.error.isEmpty() && r.generation != latest_.generation) return;
+        // A full frame replaces a preview of the same edit, never a newer one.
+        if (r.generation < shownGeneration_ || (r.generation == shownGeneration_ && shownLevel_ == 0)) return;
+    }
+    shownGeneration_ = r.generation;
+    shownLevel_ = r.level;
+    emit finished(r);
+    if (r.level == 0 && r.error.isEmpty()) warmPreview(r);
 }
 
 }  // namespace editor

@@ -1,27 +1,30 @@
 #pragma once
-// Live evaluation off the UI thread. Each request evaluates a copy of the
-// graph on a worker thread with one long-lived Evaluator, so only nodes
-// whose versions changed run again. A new request cancels the one running
-// (Evaluator::cancel) and skips any still queued: only the latest counts.
-// evaluator.h uses darkroom::Error without including its header.
-#include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
+// Live evaluation that follows the hand. Every request (an edit, another
+// node shown) is evaluated off the UI thread on a copy of the graph:
+//  - when the nodes that must run again took longer than the preview budget
+//    last time (or a value is being dragged), a reduced-resolution preview
+//    runs first (preview_graph.h), at the largest size predicted to fit the
+//    budget, corrected by what previews actually took;
+//  - when the hand stops (the drag ends, or no new value for a moment) the
+//    latest request settles at full resolution;
+//  - a newer request cancels a full-resolution run in progress when that run
+//    is slow (predicted over the budget, or of unknown cost); quick runs and
+//    previews are coalesced instead (the newest waiting one runs next);
+//  - the preview size stays fixed during a drag (a new size would resample
+//    the sources again), coarser only if a preview overran the budget;
+//  - after a slow full-resolution frame the preview evaluator is warmed in
+//    the background (sources read and downsampled), so the first drag step
+//    does not wait for the sources to be read.
+// Two workers, each with its own evaluator and cache: previews never evict
+// the full-resolution results, and a preview never waits behind a full run.
+#include "eval_worker.h"
 
 #include <QObject>
-#include <QThread>
+#include <QTimer>
 
 #include <atomic>
-#include <memory>
 
 namespace editor {
-
-struct EvalResult {
-    darkroom::BufferPtr image;
-    QString node;
-    double seconds = 0;       // wall time of the whole request
-    QString error;            // empty on success
-    QStringList errorNodes;   // nodes the error names (shown red)
-};
 
 class Evaluation : public QObject {
     Q_OBJECT
@@ -30,22 +33,50 @@ public:
     ~Evaluation() override;
 
     void request(const darkroom::Graph& graph, const QString& node, const QString& port, const QString& inputBase);
-    bool busy() const { return pending_ > 0; }
-    // Executions of a node so far (the evaluator's count; thread-safe).
+    // True while a value is being dragged: requests preview, settling waits
+    // for the end of the drag (or a pause of the hand).
+    void setInteracting(bool on);
+    bool interacting() const { return interacting_; }
+    // Work waits, runs or is about to settle.
+    bool busy() const;
+
+    // Target time of one preview frame (default 50 ms); 0 disables previews.
+    void setPreviewBudget(double seconds) { budget_ = seconds; }
+    double previewBudget() const { return budget_; }
+    // How long after the last value the frame settles at full resolution.
+    void setSettleDelay(int ms) { settleDelayMs_ = ms; }
+
+    // The preview level chosen for the current or last drag (0: none).
+    int previewLevel() const { return level_; }
+    // Executions of a node by the full-resolution and the preview evaluator.
     std::uint64_t executions(const QString& node) const;
+    std::uint64_t previewExecutions(const QString& node) const;
+    std::uint64_t generation() const { return generation_; }
 
 signals:
     void started();
-    void finished(const editor::EvalResult& result);
+    void finished(const editor::EvalResult& result);  // previews and settled frames
 
 private:
-    QThread thread_;
-    QObject* worker_;  // lives on thread_; runs the queued jobs
-    std::shared_ptr<darkroom::Evaluator> evaluator_;
+    void settle();
+    void onDone(const EvalResult& r);
+    int chooseLevel(double predicted) const;
+    void warmPreview(const EvalResult& full);
+    bool isSource(const darkroom::Graph& g, const QString& node) const;
+
+    EvalWorker* full_;
+    EvalWorker* preview_;
+    QTimer settleTimer_;
+    EvalJob latest_;
+    bool latestSettled_ = true;  // the latest request went (or goes) to full resolution
+    bool interacting_ = false;
+    std::atomic<double> budget_{0.05};  // also read by the full worker's thread
+    int settleDelayMs_ = 150;
+    double previewCorrection_ = 1.0;  // measured preview time / predicted, smoothed
+    int level_ = 0;                   // preview level of the current drag (0: none chosen)
     std::atomic<std::uint64_t> generation_{0};
-    std::atomic<int> pending_{0};
+    std::uint64_t shownGeneration_ = 0;
+    int shownLevel_ = 0;
 };
 
 }  // namespace editor
-
-Q_DECLARE_METATYPE(editor::EvalResult)

@@ -59,6 +59,22 @@ void GraphScene::setErrors(const std::map<QString, QString>& errors) {
     }
 }
 
+void GraphScene::setTimings(const std::map<QString, Timing>& timings, bool preview) {
+    for (auto& [name, item] : nodes_) {
+        const auto it = timings.find(name);
+        if (it == timings.end()) item->setTiming(-1, false, preview);
+        else item->setTiming(it->second.seconds, it->second.ran, preview);
+    }
+}
+
+QGraphicsPathItem* GraphScene::edgeItem(const darkroom::Edge& e) const {
+    for (auto* item : edges_)
+        if (item->data(0).toString().toStdString() == e.from.node && item->data(1).toString().toStdString() == e.from.port &&
+            item->data(2).toString().toStdString() == e.to.node && item->data(3).toString().toStdString() == e.to.port)
+            return item;
+    return nullptr;
+}
+
 void GraphScene::sync() {
     syncing_ = true;
     const darkroom::Graph& g = doc_->graph();
@@ -76,6 +92,7 @@ void GraphScene::sync() {
             addItem(item);
             nodes_[name] = item;
             connect(item, &NodeItem::parameterEdited, this, &GraphScene::onParameterEdited);
+            connect(item, &NodeItem::interaction, this, &GraphScene::interaction);
         }
         if (const auto pos = nodePosition(n)) item->setPos(*pos);
         item->refresh(g);
@@ -88,9 +105,15 @@ void GraphScene::sync() {
             it = nodes_.erase(it);
         }
     }
-    for (auto* e : edges_) delete e;
-    edges_.clear();
-    for (const auto& e : g.edges()) {
+    // Edges are rebuilt only when they changed: a value edit (every step of
+    // a drag) then repaints just the widget that changed.
+    bool same = edges_.size() == g.edges().size();
+    for (std::size_t i = 0; same && i < edges_.size(); ++i) same = edgeItem(g.edges()[i]) == edges_[i];
+    if (!same) {
+        for (auto* e : edges_) delete e;
+        edges_.clear();
+    }
+    for (const auto& e : same ? std::vector<darkroom::Edge>{} : g.edges()) {
         const QString key = QString::fromStdString(e.from.str() + " -> " + e.to.str());
         auto* item = new QGraphicsPathItem;
         item->setPen(QPen(QColor(180, 190, 200), 2.5));
@@ -122,6 +145,18 @@ void GraphScene::mousePressEvent(QGraphicsSceneMouseEvent* e) {
     if (e->button() == Qt::LeftButton) {
         if (PortItem* p = portAt(e->scenePos())) {
             dragFrom_ = p;
+            detached_.reset();
+            if (!p->isOutput()) {
+                // A connected input: pick up its (last) connection from the output end.
+                const auto into = doc_->graph().edgesInto(p->nodeName().toStdString(), p->spec().name);
+                NodeItem* up = into.empty() ? nullptr : nodeItem(QString::fromStdString(into.back().from.node));
+                PortItem* out = up ? up->port(QString::fromStdString(into.back().from.port), true) : nullptr;
+                if (out) {
+                    detached_ = into.back();
+                    dragFrom_ = out;
+                    if (auto* item = edgeItem(*detached_)) item->setVisible(false);
+                }
+            }
             dragLine_ = new QGraphicsPathItem;
             dragLine_->setPen(QPen(QColor(255, 220, 120), 2, Qt::DashLine));
             addItem(dragLine_);
@@ -151,14 +186,28 @@ void GraphScene::mouseReleaseEvent(QGraphicsSceneMouseEvent* e) {
         PortItem* target = portAt(e->scenePos());
         delete dragLine_;
         dragLine_ = nullptr;
-        if (target && target != dragFrom_) finishConnect(target);
+        if (detached_) finishDetached(target);
+        else if (target && target != dragFrom_) finishConnect(target);
         dragFrom_ = nullptr;
+        detached_.reset();
         e->accept();
         return;
     }
     QGraphicsScene::mouseReleaseEvent(e);
     commitMoves();
 }
+
+namespace {
+
+// Removes what occupies a single input `to`, so a new connection replaces it.
+void freeInput(darkroom::Graph& g, const darkroom::Endpoint& to) {
+    const darkroom::Node* n = g.node(to.node);
+    const darkroom::PortSpec* in = n && !n->placeholder ? g.ports(*n).input(to.port) : nullptr;
+    if (!in || in->multiple) return;
+    for (const auto& e : g.edgesInto(to.node, to.port)) g.disconnect(e.from, e.to);
+}
+
+}  // namespace
 
 void GraphScene::finishConnect(PortItem* target) {
     const PortItem* out = dragFrom_->isOutput() ? dragFrom_ : target;
@@ -168,8 +217,10 @@ void GraphScene::finishConnect(PortItem* target) {
         return;
     }
     const darkroom::Endpoint from = endpoint(out), to = endpoint(in);
+    darkroom::Graph trial = doc_->graph();
+    freeInput(trial, to);
     std::string why;
-    if (!doc_->graph().canConnect(from, to, &why)) {
+    if (!trial.canConnect(from, to, &why)) {
         const QString text = tr("Cannot connect %1 to %2: %3")
                                  .arg(QString::fromStdString(from.str()), QString::fromStdString(to.str()),
                                       QString::fromStdString(why));
@@ -178,8 +229,56 @@ void GraphScene::finishConnect(PortItem* target) {
         return;
     }
     const QString err = doc_->edit(tr("Connect %1").arg(QString::fromStdString(from.str() + " -> " + to.str())),
-                                   [&](darkroom::Graph& g) { g.connect(from, to); });
+                                   [&](darkroom::Graph& g) {
+                                       freeInput(g, to);
+                                       g.connect(from, to);
+                                   });
     if (!err.isEmpty()) emit message(err);
+}
+
+void GraphScene::finishDetached(PortItem* target) {
+    const darkroom::Edge old = *detached_;
+    auto restore = [&] {
+        if (auto* item = edgeItem(old)) item->setVisible(true);
+    };
+    if (target && !target->isOutput() && endpoint(target) == old.to) {
+        restore();  // put back where it was
+        return;
+    }
+    const QString edge = QString::fromStdString(old.from.str() + " -> " + old.to.str());
+    if (!target || target->isOutput()) {
+        const QString err = doc_->edit(tr("Disconnect %1").arg(edge),
+                                       [&](darkroom::Graph& g) { g.disconnect(old.from, old.to); });
+        if (!err.isEmpty()) {
+            restore();
+            emit message(err);
+        }
+        return;
+    }
+    const darkroom::Endpoint to = endpoint(target);
+    darkroom::Graph trial = doc_->graph();
+    trial.disconnect(old.from, old.to);
+    freeInput(trial, to);
+    std::string why;
+    if (!trial.canConnect(old.from, to, &why)) {
+        restore();
+        const QString text = tr("Cannot connect %1 to %2: %3")
+                                 .arg(QString::fromStdString(old.from.str()), QString::fromStdString(to.str()),
+                                      QString::fromStdString(why));
+        target->setToolTip(text);
+        emit message(text);
+        return;
+    }
+    const QString err = doc_->edit(tr("Move %1 to %2").arg(edge, QString::fromStdString(to.str())),
+                                   [&](darkroom::Graph& g) {
+                                       g.disconnect(old.from, old.to);
+                                       freeInput(g, to);
+                                       g.connect(old.from, to);
+                                   });
+    if (!err.isEmpty()) {
+        restore();
+        emit message(err);
+    }
 }
 
 void GraphScene::commitMoves() {

@@ -1,9 +1,13 @@
 #include "graph_view.h"
 
+#include <QCursor>
+#include <QKeyEvent>
 #include <QMouseEvent>
-#include <cmath>
 #include <QScrollBar>
 #include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
 
 namespace editor {
 
@@ -11,17 +15,37 @@ GraphView::GraphView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(sce
     setRenderHint(QPainter::Antialiasing);
     setDragMode(RubberBandDrag);
     setTransformationAnchor(AnchorUnderMouse);
-    setViewportUpdateMode(FullViewportUpdate);
+    // Only what changed is repainted: during a value drag that is one widget
+    // and the time badges, not every node's widgets.
+    setViewportUpdateMode(SmartViewportUpdate);
     setAcceptDrops(false);  // files dropped here go to the main window
 }
 
 void GraphView::fitAll() {
     const QRectF r = scene()->itemsBoundingRect().adjusted(-30, -30, 30, 30);
     if (r.isEmpty()) return;
-    fitInView(r, Qt::KeepAspectRatio);
-    // Never blow small graphs up past 1:1; widgets stay legible.
-    if (transform().m11() > 1.0) setTransform(QTransform());
-    centerOn(r.center());
+    const QSize vp = viewport()->size();
+    const double s = std::clamp(std::min(vp.width() / r.width(), vp.height() / r.height()), kReadableZoom, 1.0);
+    setTransform(QTransform::fromScale(s, s));
+    // Per axis: centred when it fits, else from its start.
+    const double w = vp.width() / s, h = vp.height() / s;
+    const double cx = r.width() <= w ? r.center().x() : r.left() + w / 2;
+    const double cy = r.height() <= h ? r.center().y() : r.top() + h / 2;
+    centerOn(cx, cy);
+}
+
+bool GraphView::event(QEvent* e) {
+    // Tab would move the keyboard focus; over the graph it opens the
+    // quick-add menu, unless a value widget in a node is being typed in.
+    if (e->type() == QEvent::KeyPress && static_cast<QKeyEvent*>(e)->key() == Qt::Key_Tab &&
+        !(scene() && scene()->focusItem())) {
+        QPoint at = hover_;
+        if (!viewport()->rect().contains(at)) at = viewport()->mapFromGlobal(QCursor::pos());
+        if (!viewport()->rect().contains(at)) at = viewport()->rect().center();
+        emit quickAddRequested(at);
+        return true;
+    }
+    return QGraphicsView::event(e);
 }
 
 void GraphView::wheelEvent(QWheelEvent* e) {
@@ -44,6 +68,7 @@ void GraphView::mousePressEvent(QMouseEvent* e) {
 }
 
 void GraphView::mouseMoveEvent(QMouseEvent* e) {
+    hover_ = e->position().toPoint();
     if (panning_) {
         const QPoint d = e->position().toPoint() - last_;
         last_ = e->position().toPoint();

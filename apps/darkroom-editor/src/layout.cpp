@@ -44,11 +44,15 @@ void autoLayout(darkroom::Graph& g) {
             if (depth.count(e.from.node)) d = std::max(d, depth[e.from.node] + 1);
         depth[name] = d;
     }
-    std::map<int, int> rows;
+    // Stacked by their drawn height (title, one row per port, the time
+    // badge above), so tall nodes never overlap the next one.
+    std::map<int, double> next;
     for (const auto& n : g.nodes()) {
         if (nodePosition(n)) continue;
         const int d = depth[n.name];
-        setNodePosition(*g.node(n.name), QPointF(d * 300.0, rows[d]++ * 260.0));
+        setNodePosition(*g.node(n.name), QPointF(d * 300.0, next[d]));
+        const auto& ports = g.ports(n);
+        next[d] += 34 + 26.0 * double(ports.inputs.size() + ports.outputs.size()) + 8 + 40;
     }
 }
 

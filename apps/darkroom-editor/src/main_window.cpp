@@ -8,6 +8,7 @@
 #include "layout.h"
 #include "node_item.h"
 #include "palette.h"
+#include "quick_add.h"
 #include "render_view.h"
 
 #include <QComboBox>
@@ -15,7 +16,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
-#include <QSplitter>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -26,40 +27,36 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
                        QWidget* parent)
     : QMainWindow(parent), doc_(new Document(registry, this)), eval_(new Evaluation(this)) {
     setAcceptDrops(true);
+    setDockNestingEnabled(true);
     scene_ = new GraphScene(doc_, this);
     graphView_ = new GraphView(scene_);
 
     auto* renderPane = new QWidget;
     auto* rl = new QVBoxLayout(renderPane);
     rl->setContentsMargins(0, 0, 0, 0);
+    rl->setSpacing(2);
     auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(4, 2, 4, 0);
     channel_ = new QComboBox;
     channel_->setMinimumContentsLength(14);
     auto* fit = new QToolButton;
     fit->setText(tr("Fit"));
     bar->addWidget(new QLabel(tr("Show:")));
-    bar->addWidget(channel_, 1);
+    bar->addWidget(channel_);
     bar->addWidget(fit);
+    bar->addStretch(1);
     rl->addLayout(bar);
     render_ = new RenderView;
     rl->addWidget(render_, 1);
-    auto* split = new QSplitter;
-    split->addWidget(graphView_);
-    split->addWidget(renderPane);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
-    setCentralWidget(split);
+    setCentralWidget(renderPane);
 
-    palette_ = new Palette(registry);
-    auto* pd = new QDockWidget(tr("Palette"), this);
-    pd->setObjectName("palette");
-    pd->setWidget(palette_);
-    addDockWidget(Qt::LeftDockWidgetArea, pd);
-    cinema_ = new CinemaPanel;
-    auto* cd = new QDockWidget(tr("Cinema"), this);
-    cd->setObjectName("cinema");
-    cd->setWidget(cinema_);
-    addDockWidget(Qt::RightDockWidgetArea, cd);
+    // The bottom docks span the whole width: the graph is wide and short.
+    setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+    auto* gd = new QDockWidget(tr("Graph"), this);
+    gd->setObjectName("graph");
+    gd->setWidget(graphView_);
+    addDockWidget(Qt::BottomDockWidgetArea, gd);
     log_ = new QPlainTextEdit;
     log_->setReadOnly(true);
     log_->setMaximumBlockCount(2000);
@@ -67,6 +64,20 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     ld->setObjectName("log");
     ld->setWidget(log_);
     addDockWidget(Qt::BottomDockWidgetArea, ld);
+    tabifyDockWidget(gd, ld);
+    gd->raise();
+    palette_ = new Palette(registry);
+    auto* pd = new QDockWidget(tr("Palette"), this);
+    pd->setObjectName("palette");
+    pd->setWidget(palette_);
+    addDockWidget(Qt::LeftDockWidgetArea, pd);
+    cinema_ = new CinemaPanel(registry);
+    auto* cd = new QDockWidget(tr("Cinema"), this);
+    cd->setObjectName("cinema");
+    cd->setWidget(cinema_);
+    addDockWidget(Qt::RightDockWidgetArea, cd);
+    cd->hide();  // until a database is opened
+    quickAdd_ = new QuickAdd(registry, this);
 
     probe_ = new QLabel;
     timing_ = new QLabel;
@@ -77,17 +88,36 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     logMessage(tr("%1 filter types from %2 plugins").arg(registry.filters().size()).arg(registry.plugins().size()));
 
     connect(palette_, &Palette::addRequested, this, [this](const QString& t) { addNode(t); });
+    connect(graphView_, &GraphView::quickAddRequested, this, [this](QPoint at) {
+        const QPointF scenePos = graphView_->mapToScene(at);
+        quickAdd_->setProperty("scenePos", scenePos);
+        quickAdd_->popup(graphView_->viewport()->mapToGlobal(at));
+    });
+    connect(quickAdd_, &QuickAdd::chosen, this, [this](const QString& type) {
+        addNode(type, quickAdd_->property("scenePos").toPointF());
+        graphView_->setFocus();
+    });
     connect(scene_, &GraphScene::message, this, [this](const QString& m) {
         statusBar()->showMessage(m, 8000);
         logMessage(m);
     });
+    connect(scene_, &GraphScene::interaction, eval_, &Evaluation::setInteracting);
     connect(scene_, &QGraphicsScene::selectionChanged, this, &MainWindow::scheduleEvaluation);
     connect(doc_, &Document::changed, this, &MainWindow::scheduleEvaluation);
     connect(doc_, &Document::pathChanged, this, &MainWindow::updateTitle);
     connect(doc_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(eval_, &Evaluation::finished, this, &MainWindow::onEvaluated);
-    connect(eval_, &Evaluation::started, this, [this] { timing_->setText(tr("evaluating…")); });
+    connect(eval_, &Evaluation::started, this, [this] {
+        if (timing_->text().isEmpty()) timing_->setText(tr("evaluating…"));
+    });
     connect(render_, &RenderView::probed, probe_, &QLabel::setText);
+    connect(render_, &RenderView::presented, this, [this](std::uint64_t tag) {
+        const auto it = tags_.find(tag);
+        if (it == tags_.end()) return;
+        const auto [generation, level] = it->second;
+        tags_.erase(tags_.begin(), std::next(it));
+        emit framePresented(generation, level);
+    });
     connect(render_, &RenderView::modesChanged, this, [this](const QStringList& modes, const QString& cur) {
         QSignalBlocker b(channel_);
         channel_->clear();
@@ -100,7 +130,26 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
 
     buildMenus();
     updateTitle();
-    resize(1500, 900);
+    // Defaults: a render view well over half the window, a graph strip
+    // tall enough for a row of nodes at a readable zoom.
+    resize(1560, 960);
+    // The saved size now; the dock layout once the window has that size
+    // (restoring it earlier lays the docks out for the default size).
+    QSettings s;
+    if (s.value("layout/version").toInt() == kLayoutVersion) restoreGeometry(s.value("layout/geometry").toByteArray());
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (shownOnce_) return;
+    shownOnce_ = true;
+    restored_ = restoreLayout();
+    // Default proportions, for the size the window really got: the graph a
+    // strip of about a third of the height, the palette narrow.
+    if (!restored_) {
+        resizeDocks({dock("palette")}, {std::max(180, width() / 8)}, Qt::Horizontal);
+        resizeDocks({dock("graph")}, {std::max(220, height() * 3 / 8)}, Qt::Vertical);
+    }
 }
 
 MainWindow::~MainWindow() {
@@ -111,15 +160,22 @@ MainWindow::~MainWindow() {
     doc_->disconnect(this);
 }
 
+QDockWidget* MainWindow::dock(const QString& objectName) const {
+    return findChild<QDockWidget*>(objectName, Qt::FindDirectChildrenOnly);
+}
+
 void MainWindow::logMessage(const QString& text) { log_->appendPlainText(text); }
 
-QString MainWindow::addNode(const QString& type) {
+QString MainWindow::frameText() const { return timing_->text(); }
+
+QString MainWindow::addNode(const QString& type, std::optional<QPointF> scenePos) {
     const QString name = doc_->uniqueName(type);
     // Right of the existing nodes, so a new node never hides another's ports.
     const QRectF used = scene_->itemsBoundingRect();
-    const QPointF at = doc_->graph().nodes().empty()
-                           ? graphView_->mapToScene(graphView_->viewport()->rect().center()) - QPointF(135, 40)
-                           : QPointF(used.right() + 60, used.top());
+    QPointF at = scenePos ? *scenePos - QPointF(NodeItem::width() / 2, 12)
+                 : doc_->graph().nodes().empty()
+                     ? graphView_->mapToScene(graphView_->viewport()->rect().center()) - QPointF(135, 40)
+                     : QPointF(used.right() + 60, used.top() + 22);
     const QString err = doc_->edit(tr("Add %1").arg(name), [&](darkroom::Graph& g) {
         setNodePosition(g.addNode(name.toStdString(), type.toStdString()), at);
     });
@@ -131,7 +187,7 @@ QString MainWindow::addNode(const QString& type) {
     scene_->clearSelection();
     if (NodeItem* item = scene_->nodeItem(name)) {
         item->setSelected(true);
-        graphView_->ensureVisible(item);
+        if (!scenePos) graphView_->ensureVisible(item);  // at the cursor it is in view already
     }
     return name;
 }
@@ -141,19 +197,30 @@ void MainWindow::scheduleEvaluation() {
     QString node = scene_->selectedNode();
     if (node.isEmpty() && g.node(shownNode_.toStdString())) node = shownNode_;
     if (node.isEmpty()) {
-        // Nothing chosen yet: the last node in dependency order with an image output.
+        // Nothing chosen yet: what the pipeline writes (the last output node
+        // fed an image), else the last node in dependency order with an
+        // image output.
+        QString sink;
         try {
             for (const auto& n : g.topologicalOrder()) {
                 const auto* x = g.node(n);
                 for (const auto& o : g.ports(*x).outputs)
                     if (o.isImage()) node = QString::fromStdString(n);
+                if (g.ports(*x).outputs.empty() && !x->placeholder)
+                    for (const auto& e : g.edgesInto(n)) {
+                        const auto* up = g.node(e.from.node);
+                        const auto* spec = up && !up->placeholder ? g.ports(*up).output(e.from.port) : nullptr;
+                        if (spec && spec->isImage()) sink = QString::fromStdString(n);
+                    }
             }
         } catch (const std::exception&) {
         }
+        if (!sink.isEmpty()) node = sink;
     }
     const darkroom::Node* n = g.node(node.toStdString());
     if (!n) {
         render_->setImage(nullptr);
+        scene_->setTimings({}, false);
         shownNode_.clear();
         return;
     }
@@ -190,19 +257,38 @@ void MainWindow::scheduleEvaluation() {
 void MainWindow::onEvaluated(const EvalResult& r) {
     std::map<QString, QString> errors;
     for (const auto& n : r.errorNodes) errors[n] = r.error;
-    scene_->setErrors(errors);
+    if (r.level == 0) scene_->setErrors(errors);
     if (!r.error.isEmpty()) {
         logMessage(r.error);
         statusBar()->showMessage(r.error, 8000);
         timing_->setText(tr("failed"));
+        emit evaluated();
+        return;
+    }
+    tags_[++tag_] = {r.generation, r.level};
+    render_->setImage(r.image, r.level, tag_);
+
+    // Badges and the status line: what ran for this frame, and how long.
+    std::map<QString, GraphScene::Timing> timings;
+    QStringList ran;
+    int inGraph = 0;
+    for (const auto& run : r.profile.nodes) {
+        const QString name = QString::fromStdString(run.node);
+        if (!doc_->graph().node(run.node)) continue;  // the preview's own Resize nodes
+        ++inGraph;
+        timings[name] = {run.seconds, run.ran};
+        if (run.ran) ran << name;
+    }
+    scene_->setTimings(timings, r.level > 0);
+    if (r.image) {
+        const QString size = QStringLiteral("%1 × %2").arg(r.image->width()).arg(r.image->height());
+        const QString what = r.level > 0 ? tr("preview 1/%1, %2").arg(1 << r.level).arg(size) : size;
+        QString ranText = ran.isEmpty() ? tr("all cached") : tr("ran %1 of %2: %3").arg(ran.size()).arg(inGraph).arg(ran.join(", "));
+        if (ranText.size() > 90) ranText = ranText.left(88) + QStringLiteral("…");
+        timing_->setText(tr("%1: %2, %3 ms · %4").arg(r.node, what).arg(r.profile.seconds * 1000.0, 0, 'f', 1).arg(ranText));
+        timing_->setToolTip(ran.join(QStringLiteral("\n")));
     } else {
-        render_->setImage(r.image);
-        timing_->setText(r.image ? tr("%1: %2 x %3, %4 ms")
-                                       .arg(r.node)
-                                       .arg(r.image->width())
-                                       .arg(r.image->height())
-                                       .arg(r.seconds * 1000.0, 0, 'f', 1)
-                                 : QString());
+        timing_->clear();
     }
     emit evaluated();
 }
@@ -220,18 +306,34 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         statusBar()->showMessage(tr("Several CinemaReader nodes: select the one the browser drives"), 8000);
         return;
     }
+    bool add = false;
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
-        reader = addNode(QStringLiteral("CinemaReader"));
-        if (reader.isEmpty()) return;
+        reader = doc_->uniqueName(QStringLiteral("CinemaReader"));
+        add = true;
     }
+    // One edit (and one evaluation) for adding the reader and pointing it at the entry.
     const QString err = doc_->edit(tr("Cinema entry %1").arg(parameters), [&](darkroom::Graph& gg) {
         const std::string n = reader.toStdString();
+        if (add) {
+            const QRectF used = scene_->itemsBoundingRect();
+            setNodePosition(gg.addNode(n, "CinemaReader"),
+                            gg.nodes().size() == 1 ? graphView_->mapToScene(graphView_->viewport()->rect().center()) -
+                                                         QPointF(NodeItem::width() / 2, 40)
+                                                   : QPointF(used.left(), used.bottom() + 60));
+        }
         const darkroom::Value* db = gg.node(n)->parameter("database");
         if (!db || QString::fromStdString(db->asString()) != database) gg.setParameter(n, "database", database.toStdString());
         gg.setParameter(n, "parameters", parameters.toStdString());
-    }, QStringLiteral("cinema:") + reader);
+    }, add ? QString() : QStringLiteral("cinema:") + reader);
     if (!err.isEmpty()) logMessage(err);
+    if (add) {
+        scene_->clearSelection();
+        if (NodeItem* item = scene_->nodeItem(reader)) {
+            item->setSelected(true);
+            graphView_->ensureVisible(item);
+        }
+    }
 }
 
 }  // namespace editor

@@ -1,13 +1,20 @@
 #pragma once
-// The editor window: graph view and render view side by side, the palette,
-// Cinema browser and log as docks, menus for files and editing, and the
-// live evaluation that follows every change.
+// The editor window. The render view is the central widget, the largest
+// area (like Blender's compositor backdrop or Inviwo's canvas); the graph
+// is a dock along the bottom, the palette a narrow dock on the left, the
+// Cinema browser appears on the right when a database is opened, and the
+// log is a tab beside the graph. Window and dock layout are remembered
+// (QSettings). Every edit is evaluated live (evaluation.h).
 #include <darkroom/framework/diagnostics.h>
 #include <darkroom/framework/registry.h>
 
 #include <QMainWindow>
 
+#include <map>
+#include <optional>
+
 class QComboBox;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QPlainTextEdit;
@@ -20,6 +27,7 @@ class Evaluation;
 class GraphScene;
 class GraphView;
 class Palette;
+class QuickAdd;
 class RenderView;
 struct EvalResult;
 
@@ -36,26 +44,41 @@ public:
     RenderView* renderView() const { return render_; }
     Palette* palette() const { return palette_; }
     CinemaPanel* cinema() const { return cinema_; }
+    QuickAdd* quickAdd() const { return quickAdd_; }
     Evaluation* evaluation() const { return eval_; }
     QPlainTextEdit* log() const { return log_; }
+    QDockWidget* dock(const QString& objectName) const;
     QString displayedNode() const { return shownNode_; }
+    // The status bar's frame line: size, time, the nodes that ran.
+    QString frameText() const;
 
     // File operations; failures are logged and shown, never thrown.
     bool openPipeline(const QString& path);
     bool savePipeline(const QString& path);
     bool openCinema(const QString& path);
     bool exportView(const QString& path);  // .exr: the buffer's channels; else the view as 8-bit
-    // Adds a node of `type` at the centre of the graph view and selects it.
-    QString addNode(const QString& type);
+    // Adds a node of `type` and selects it: with its title at `scenePos`, or
+    // right of the existing nodes.
+    QString addNode(const QString& type, std::optional<QPointF> scenePos = std::nullopt);
     void logMessage(const QString& text);
+    // Bumped when docks are added or renamed: an older saved layout is ignored.
+    static constexpr int kLayoutVersion = 2;
+    // Window geometry and dock layout to and from QSettings (closing saves,
+    // the first show restores).
+    void saveLayout() const;
+    bool restoreLayout();
 
 signals:
     void evaluated();  // a result (image or error) reached the render view
+    // The frame of evaluation `generation` is on screen (level 0 = settled
+    // at full resolution, k = preview at 1/2^k).
+    void framePresented(std::uint64_t generation, int level);
 
 protected:
     void dragEnterEvent(QDragEnterEvent* e) override;
     void dropEvent(QDropEvent* e) override;
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
 
 private:
     void buildMenus();
@@ -74,6 +97,7 @@ private:
     QComboBox* channel_;
     Palette* palette_;
     CinemaPanel* cinema_;
+    QuickAdd* quickAdd_;
     QPlainTextEdit* log_;
     Evaluation* eval_;
     QLabel* probe_;
@@ -81,6 +105,10 @@ private:
     QMenu* recentMenu_ = nullptr;
     QString shownNode_;
     QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
+    bool restored_ = false;   // the layout came from QSettings
+    bool shownOnce_ = false;
+    std::uint64_t tag_ = 0;
+    std::map<std::uint64_t, std::pair<std::uint64_t, int>> tags_;  // render tag -> generation, level
 };
 
 }  // namespace editor

@@ -3,6 +3,7 @@
 #include "main_window.h"
 
 #include "cinema_panel.h"
+#include "display.h"
 #include "document.h"
 #include "graph_scene.h"
 #include "graph_view.h"
@@ -87,6 +88,9 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("Fit &graph"), this, [this] { graphView_->fitAll(); });
     view->addAction(tr("Fit &image"), QKeySequence(Qt::Key_F), render_, &RenderView::fit);
+    view->addSeparator();
+    for (const char* name : {"graph", "palette", "cinema", "log"})
+        if (QDockWidget* d = dock(name)) view->addAction(d->toggleViewAction());
     updateRecentMenu();
 }
 
@@ -126,7 +130,10 @@ bool MainWindow::openCinema(const QString& path) {
         statusBar()->showMessage(err, 10000);
         return false;
     }
-    if (auto* dock = qobject_cast<QDockWidget*>(cinema_->parentWidget())) dock->raise();
+    if (QDockWidget* d = dock("cinema")) {
+        d->show();
+        d->raise();
+    }
     return true;
 }
 
@@ -143,7 +150,7 @@ bool MainWindow::exportView(const QString& path) {
             // What the view shows (false colour, normals, ...), not the raw
             // channels: decode the display's sRGB back to the linear floats
             // writeImage expects.
-            const QImage& d = render_->displayImage();
+            const QImage d = renderDisplay(*image, render_->mode());
             auto b = darkroom::makeCpuBuffer(d.width(), d.height(), {{"R"}, {"G"}, {"B"}, {"A"}});
             float* ch[4] = {b->writeFloat("R"), b->writeFloat("G"), b->writeFloat("B"), b->writeFloat("A")};
             for (int y = 0; y < d.height(); ++y) {
@@ -222,8 +229,29 @@ void MainWindow::dropEvent(QDropEvent* e) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (maybeSave()) e->accept();
-    else e->ignore();
+    if (maybeSave()) {
+        saveLayout();
+        e->accept();
+    } else {
+        e->ignore();
+    }
+}
+
+void MainWindow::saveLayout() const {
+    QSettings s;
+    s.setValue("layout/version", kLayoutVersion);
+    s.setValue("layout/geometry", saveGeometry());
+    s.setValue("layout/state", saveState(kLayoutVersion));
+}
+
+bool MainWindow::restoreLayout() {
+    QSettings s;
+    if (s.value("layout/version").toInt() != kLayoutVersion) return false;
+    const bool ok = restoreGeometry(s.value("layout/geometry").toByteArray()) &&
+                    restoreState(s.value("layout/state").toByteArray(), kLayoutVersion);
+    // The Cinema browser belongs to an open database, not to the last session.
+    if (QDockWidget* d = dock("cinema"); d && !cinema_->database()) d->hide();
+    return ok;
 }
 
 }  // namespace editor

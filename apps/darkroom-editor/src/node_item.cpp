@@ -10,7 +10,7 @@
 namespace editor {
 namespace {
 
-constexpr qreal kWidth = 270, kHeader = 34, kRow = 26, kPortR = 6;
+constexpr qreal kWidth = 270, kHeader = 34, kRow = 26, kPortR = 6, kBadge = 20;
 
 QColor portColour(darkroom::PortType t) {
     using T = darkroom::PortType;
@@ -27,6 +27,44 @@ QColor portColour(darkroom::PortType t) {
 
 }  // namespace
 
+// The time badge above a node's top-right corner.
+class BadgeItem : public QGraphicsItem {
+public:
+    explicit BadgeItem(QGraphicsItem* parent) : QGraphicsItem(parent) {}
+    QRectF boundingRect() const override { return rect_; }
+    void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override {
+        if (text_.isEmpty()) return;
+        p->setRenderHint(QPainter::Antialiasing);
+        p->setPen(Qt::NoPen);
+        p->setBrush(ran_ ? QColor(40, 120, 60) : QColor(70, 72, 78));
+        p->drawRoundedRect(rect_, 4, 4);
+        p->setFont(font());
+        p->setPen(ran_ ? QColor(235, 255, 235) : QColor(190, 190, 190));
+        p->drawText(rect_, Qt::AlignCenter, text_);
+    }
+    void set(const QString& text, bool ran) {
+        if (text == text_ && ran == ran_) return;
+        prepareGeometryChange();
+        text_ = text;
+        ran_ = ran;
+        const qreal w = text_.isEmpty() ? 0 : QFontMetricsF(font()).horizontalAdvance(text_) + 12;
+        rect_ = QRectF(-w, -kBadge - 1, w, kBadge - 2);  // right-aligned at the item's position
+        update();
+    }
+    const QString& text() const { return text_; }
+    bool ran() const { return ran_; }
+
+private:
+    static QFont font() {
+        QFont f;
+        f.setPointSizeF(f.pointSizeF() * 0.9);
+        return f;
+    }
+    QString text_;
+    bool ran_ = false;
+    QRectF rect_;
+};
+
 PortItem::PortItem(const darkroom::PortSpec& spec, bool output, QGraphicsItem* parent)
     : QGraphicsEllipseItem(-kPortR, -kPortR, 2 * kPortR, 2 * kPortR, parent), spec_(spec), output_(output) {
     setBrush(portColour(spec.type));
@@ -40,8 +78,9 @@ PortItem::PortItem(const darkroom::PortSpec& spec, bool output, QGraphicsItem* p
 QString PortItem::nodeName() const { return static_cast<NodeItem*>(parentItem())->name(); }
 
 NodeItem::NodeItem(const darkroom::Node& node, const darkroom::PortList& ports, const QString& baseFolder)
-    : name_(QString::fromStdString(node.name)), type_(node.type) {
+    : name_(QString::fromStdString(node.name)), type_(node.type), badge_(new BadgeItem(this)) {
     setFlags(ItemIsMovable | ItemIsSelectable | ItemSendsGeometryChanges);
+    badge_->setPos(kWidth, 0);
     qreal y = kHeader + kRow / 2;
     for (const auto& out : ports.outputs) {
         auto* p = new PortItem(out, true, this);
@@ -65,6 +104,7 @@ NodeItem::NodeItem(const darkroom::Node& node, const darkroom::PortList& ports, 
             widgets_[n] = w;
             connect(w, &ParamWidget::edited, this,
                     [this, n](const darkroom::Value& v) { emit parameterEdited(name_, n, v); });
+            connect(w, &ParamWidget::interaction, this, &NodeItem::interaction);
         }
         y += kRow;
     }
@@ -73,6 +113,21 @@ NodeItem::NodeItem(const darkroom::Node& node, const darkroom::PortList& ports, 
 }
 
 QRectF NodeItem::boundingRect() const { return QRectF(-kPortR, 0, kWidth + 2 * kPortR, height_); }
+
+qreal NodeItem::width() { return kWidth; }
+
+const QString& NodeItem::badgeText() const { return badge_->text(); }
+
+bool NodeItem::badgeRan() const { return badge_->ran(); }
+
+void NodeItem::setTiming(double seconds, bool ran, bool preview) {
+    QString text;
+    if (seconds >= 0)
+        text = (seconds < 0.9995 ? QStringLiteral("%1 ms").arg(seconds * 1000, 0, 'f', seconds < 0.01 ? 1 : 0)
+                                 : QStringLiteral("%1 s").arg(seconds, 0, 'f', 2)) +
+               (preview && ran ? QStringLiteral(" (preview)") : ran ? QString() : QStringLiteral(" cached"));
+    badge_->set(text, ran);
+}
 
 void NodeItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     const QRectF r(0, 0, kWidth, height_);

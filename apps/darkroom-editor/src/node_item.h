@@ -1,6 +1,8 @@
 #pragma once
 // One node in the graph view: a titled box with input ports on the left,
-// outputs on the right, and the value widget of each unconnected value input.
+// outputs on the right, the value widget of each unconnected value input,
+// and above it a badge with the time of its last run (green: it ran for the
+// frame on screen; grey: its result came from the cache).
 #include <darkroom/framework/graph.h>
 
 #include <QGraphicsEllipseItem>
@@ -13,6 +15,7 @@ class QGraphicsProxyWidget;
 namespace editor {
 
 class ParamWidget;
+class BadgeItem;
 
 class PortItem : public QGraphicsEllipseItem {
 public:
@@ -44,14 +47,22 @@ public:
     // Shows the node's current values; hides widgets of connected inputs.
     void refresh(const darkroom::Graph& g);
     void setError(const QString& message);  // empty clears
+    // The badge: seconds < 0 hides it.
+    void setTiming(double seconds, bool ran, bool preview);
+    const QString& badgeText() const;
+    bool badgeRan() const;
+    static qreal width();
 
 signals:
     void parameterEdited(const QString& node, const QString& port, const darkroom::Value& v);
+    void interaction(bool dragging);  // a value widget's drag starts or ends
 
 private:
     QString name_;
     std::string type_;
     QString error_;
+    // Its own item, so a new time repaints the badge, not the node's widgets.
+    BadgeItem* badge_;
     qreal height_ = 0;
     std::map<QString, PortItem*> inputs_, outputs_;
     std::map<QString, QGraphicsProxyWidget*> proxies_;

@@ -10,6 +10,7 @@
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QPainter>
 #include <QPixmap>
 #include <QPushButton>
@@ -70,6 +71,8 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
             slider_ = new QSlider(Qt::Horizontal);
             slider_->setRange(0, isInt ? int(*port.maximum - *port.minimum) : kSliderSteps);
             lay->addWidget(slider_, 2);
+            connect(slider_, &QSlider::sliderPressed, this, [this] { emit interaction(true); });
+            connect(slider_, &QSlider::sliderReleased, this, [this] { emit interaction(false); });
             connect(slider_, &QSlider::valueChanged, this, [this, isInt](int s) {
                 if (updating_) return;
                 const double v = isInt ? *port_.minimum + s
@@ -77,6 +80,11 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
                 spin_->setValue(v);  // emits through the spin box
             });
         }
+        if (!slider_)
+            if (auto* edit = spin_->findChild<QLineEdit*>()) {
+                edit->installEventFilter(this);
+                edit->setCursor(Qt::SizeHorCursor);
+            }
         connect(spin_, &QDoubleSpinBox::valueChanged, this, [this, isInt](double v) {
             if (slider_) {
                 QSignalBlocker b(slider_);
@@ -144,6 +152,57 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
     }
     setToolTip(QString::fromStdString(port.name + ": " + port.doc));
     setValue(port.defaultValue);
+}
+
+double ParamWidget::scrubStep(double start) const {
+    // One pixel changes the value by 0.5 % of its size (at least 0.001), so
+    // a 200-pixel drag doubles it whatever its scale; integers by >= 1/10.
+    const double step = std::max(std::abs(start) * 0.005, 0.001);
+    return port_.type == darkroom::PortType::Int ? std::max(step, 0.1) : step;
+}
+
+bool ParamWidget::eventFilter(QObject* watched, QEvent* e) {
+    auto* edit = qobject_cast<QLineEdit*>(watched);
+    if (!edit || !spin_ || edit->hasFocus()) return QWidget::eventFilter(watched, e);  // typing: normal editing
+    switch (e->type()) {
+    case QEvent::MouseButtonPress: {
+        auto* m = static_cast<QMouseEvent*>(e);
+        if (m->button() != Qt::LeftButton) break;
+        pressed_ = true;
+        scrubbing_ = false;
+        pressAt_ = m->globalPosition();
+        pressValue_ = spin_->value();
+        return true;
+    }
+    case QEvent::MouseMove: {
+        auto* m = static_cast<QMouseEvent*>(e);
+        if (!pressed_) break;
+        const double dx = m->globalPosition().x() - pressAt_.x();
+        if (!scrubbing_ && std::abs(dx) < 3) return true;
+        if (!scrubbing_) {
+            scrubbing_ = true;
+            emit interaction(true);
+        }
+        const double fine = (m->modifiers() & Qt::ControlModifier) ? 0.1 : 1.0;
+        spin_->setValue(pressValue_ + dx * scrubStep(pressValue_) * fine);  // emits through the spin box
+        return true;
+    }
+    case QEvent::MouseButtonRelease: {
+        if (!pressed_) break;
+        pressed_ = false;
+        if (scrubbing_) {
+            scrubbing_ = false;
+            emit interaction(false);
+        } else {  // a click: edit the number as text
+            spin_->setFocus(Qt::MouseFocusReason);
+            edit->selectAll();
+        }
+        return true;
+    }
+    default:
+        break;
+    }
+    return QWidget::eventFilter(watched, e);
 }
 
 void ParamWidget::emitText(const QString& text) {

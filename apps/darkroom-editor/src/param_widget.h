@@ -1,7 +1,9 @@
 #pragma once
 // The value widget shown beside an unconnected value input: spin box and
 // slider for ranged numbers, check box, enum combo, colour button, colour-map
-// combo with preview strips, file chooser, line edit.
+// combo with preview strips, file chooser, line edit. Numbers without a
+// finite range are dragged on their field (left-drag sideways, Ctrl for
+// fine steps; a click without dragging edits the text), as in Blender.
 #include <darkroom/port.h>
 
 #include <QWidget>
@@ -25,14 +27,24 @@ public:
     ParamWidget(const darkroom::PortSpec& port, const QString& baseFolder, QWidget* parent = nullptr);
     void setValue(const darkroom::Value& v);  // no edited() signal
     const darkroom::PortSpec& port() const { return port_; }
-    // For tests: the slider of a ranged number, else null.
+    // For tests: the slider of a ranged number, else null; the number field.
     QSlider* slider() const { return slider_; }
+    QDoubleSpinBox* spinBox() const { return spin_; }
 
 signals:
     void edited(const darkroom::Value& v);
+    // A drag of the slider or of the number field starts or ends.
+    void interaction(bool dragging);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* e) override;
 
 private:
     void emitText(const QString& text);
+    double scrubStep(double start) const;
+    bool pressed_ = false, scrubbing_ = false;
+    QPointF pressAt_;
+    double pressValue_ = 0;
     darkroom::PortSpec port_;
     QString baseFolder_;
     QSlider* slider_ = nullptr;

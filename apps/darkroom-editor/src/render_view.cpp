@@ -1,9 +1,10 @@
 #include "render_view.h"
 
-#include "display.h"
+#include "image_program.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -11,43 +12,89 @@
 
 namespace editor {
 
-RenderView::RenderView(QWidget* parent) : QOpenGLWidget(parent) {
+RenderView::RenderView(QWidget* parent) : QOpenGLWidget(parent), program_(std::make_unique<ImageProgram>()) {
     setMouseTracking(true);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 150);
+    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+        if (!drawnNew_) return;
+        drawnNew_ = false;
+        presentedTag_ = drawnTag_;
+        emit presented(presentedTag_);
+    });
 }
 
-void RenderView::setImage(darkroom::BufferPtr image) {
-    const bool sizeChanged = !image_ || !image || image_->width() != image->width() ||
-                             image_->height() != image->height();
+RenderView::~RenderView() {
+    // Textures and the shader belong to this widget's context.
+    makeCurrent();
+    program_.reset();
+    doneCurrent();
+}
+
+int RenderView::uploads() const { return program_->uploads(); }
+
+int RenderView::mappings() const { return program_->mappings(); }
+
+QSizeF RenderView::fullSize() const {
+    if (!image_) return {};
+    const double f = std::ldexp(1.0, level_);
+    return QSizeF(image_->width() * f, image_->height() * f);
+}
+
+void RenderView::setImage(darkroom::BufferPtr image, int level, std::uint64_t tag) {
+    const QSizeF before = fullSize();
     image_ = std::move(image);
-    modes_ = image_ ? displayModes(*image_) : QStringList();
-    if (!modes_.contains(mode_)) mode_ = modes_.isEmpty() ? QString() : modes_.front();
-    display_ = image_ ? renderDisplay(*image_, mode_) : QImage();
+    level_ = image_ ? level : 0;
+    tag_ = tag;
+    imageChanged_ = true;
+    // A preview's size is the full size rounded to 1/2^level: within one
+    // preview pixel of the last full frame counts as the same picture.
+    const QSizeF now = fullSize();
+    const double slack = std::ldexp(1.0, level_);
+    const bool sizeChanged = before.isEmpty() != now.isEmpty() || std::abs(before.width() - now.width()) > slack ||
+                             std::abs(before.height() - now.height()) > slack;
+    const QStringList modes = image_ ? displayModes(*image_) : QStringList();
+    const bool newModes = modes != modes_;
+    modes_ = modes;
+    if (!modes_.contains(mode_)) mode_ = preferredMode(modes_);
+    spec_ = image_ ? displaySpec(*image_, mode_) : DisplaySpec{};
     if (sizeChanged) fitted_ = true;
     if (fitted_) fit();
-    emit modesChanged(modes_, mode_);
+    if (newModes) emit modesChanged(modes_, mode_);
+    if (hover_.x() >= 0) updateProbe(hover_);
     update();
 }
 
 void RenderView::setMode(const QString& mode) {
     if (mode == mode_ || !modes_.contains(mode)) return;
     mode_ = mode;
-    display_ = image_ ? renderDisplay(*image_, mode_) : QImage();
+    spec_ = image_ ? displaySpec(*image_, mode_) : DisplaySpec{};
     update();
 }
 
 void RenderView::fit() {
     fitted_ = true;
-    if (display_.isNull() || width() <= 0) return;
-    zoom_ = std::min(double(width()) / display_.width(), double(height()) / display_.height());
-    offset_ = QPointF((width() - display_.width() * zoom_) / 2, (height() - display_.height() * zoom_) / 2);
+    const QSizeF s = fullSize();
+    if (s.isEmpty() || width() <= 0) return;
+    zoom_ = std::min(width() / s.width(), height() / s.height());
+    offset_ = QPointF((width() - s.width() * zoom_) / 2, (height() - s.height() * zoom_) / 2);
+    update();
+}
+
+void RenderView::setView(double zoom, QPointF offset) {
+    zoom_ = std::clamp(zoom, 0.02, 64.0);
+    offset_ = offset;
+    fitted_ = false;
     update();
 }
 
 QPoint RenderView::pixelAt(QPointF p) const {
-    const QPointF q = (p - offset_) / zoom_;
+    const QPointF q = (p - offset_) / (zoom_ * std::ldexp(1.0, level_));
     return QPoint(int(std::floor(q.x())), int(std::floor(q.y())));
+}
+
+void RenderView::initializeGL() {
+    if (!program_->initialize(&glError_)) qWarning("darkroom-editor render view: %s", qPrintable(glError_));
 }
 
 void RenderView::resizeGL(int, int) {
@@ -55,27 +102,37 @@ void RenderView::resizeGL(int, int) {
 }
 
 void RenderView::paintGL() {
-    // QPainter on a QOpenGLWidget draws through OpenGL; images up to a few
-    // megapixels are uploaded as textures quickly enough for live editing.
-    QPainter p(this);
-    p.fillRect(rect(), QColor(30, 30, 32));
-    if (display_.isNull()) {
-        p.setPen(Qt::lightGray);
-        p.drawText(rect(), Qt::AlignCenter, tr("Select a node with an image output"));
-        return;
+    auto* gl = context()->functions();
+    gl->glClearColor(30 / 255.0f, 30 / 255.0f, 32 / 255.0f, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    if (imageChanged_) {
+        program_->setImage(image_);  // uploads happen below, for the channels the mode shows
+        imageChanged_ = false;
     }
-    const QRectF target(offset_, QSizeF(display_.width() * zoom_, display_.height() * zoom_));
-    // The checkerboard shows through transparent pixels (alpha, background).
-    QPixmap checker(16, 16);
-    checker.fill(QColor(150, 150, 150));
-    QPainter c(&checker);
-    c.fillRect(0, 0, 8, 8, QColor(100, 100, 100));
-    c.fillRect(8, 8, 8, 8, QColor(100, 100, 100));
-    c.end();
-    p.fillRect(target, QBrush(checker));
-    // Nearest-neighbour when magnified, so single pixels can be probed.
-    p.setRenderHint(QPainter::SmoothPixmapTransform, zoom_ < 1.0);
-    p.drawImage(target, display_);
+    const qreal dpr = devicePixelRatioF();
+    if (image_ && spec_.kind != DisplaySpec::Kind::None && glError_.isEmpty()) {
+        const QSizeF s = fullSize();
+        const QRectF target(offset_ * dpr, s * zoom_ * dpr);
+        program_->draw(spec_, target, QSize(int(width() * dpr), int(height() * dpr)), defaultFramebufferObject(),
+                       level_ > 0);
+    } else {
+        QPainter p(this);
+        p.setPen(Qt::lightGray);
+        p.drawText(rect(), Qt::AlignCenter,
+                   glError_.isEmpty() ? tr("Select a node with an image output") : tr("OpenGL: %1").arg(glError_));
+    }
+    if (tag_ != drawnTag_) {
+        drawnTag_ = tag_;
+        drawnNew_ = true;  // announced when the window's buffers swap
+    }
+}
+
+void RenderView::updateProbe(QPointF at) {
+    if (!image_) return;
+    const QPoint px = pixelAt(at);
+    QString text = probeText(*image_, px.x(), px.y());
+    if (!text.isEmpty() && level_ > 0) text = tr("preview 1/%1: ").arg(1 << level_) + text;
+    emit probed(text);
 }
 
 void RenderView::wheelEvent(QWheelEvent* e) {
@@ -97,10 +154,8 @@ void RenderView::mouseMoveEvent(QMouseEvent* e) {
         fitted_ = false;
         update();
     }
-    if (image_) {
-        const QPoint px = pixelAt(e->position());
-        emit probed(probeText(*image_, px.x(), px.y()));
-    }
+    hover_ = e->position();
+    updateProbe(hover_);
 }
 
 void RenderView::mouseDoubleClickEvent(QMouseEvent*) { fit(); }
@@ -108,8 +163,9 @@ void RenderView::mouseDoubleClickEvent(QMouseEvent*) { fit(); }
 void RenderView::keyPressEvent(QKeyEvent* e) {
     if (e->key() == Qt::Key_F) fit();
     else if (e->key() == Qt::Key_1) {  // 1:1, centred
+        const QSizeF s = fullSize();
         zoom_ = 1.0;
-        offset_ = QPointF((width() - display_.width()) / 2.0, (height() - display_.height()) / 2.0);
+        offset_ = QPointF((width() - s.width()) / 2.0, (height() - s.height()) / 2.0);
         fitted_ = false;
         update();
     } else QOpenGLWidget::keyPressEvent(e);

@@ -1,33 +1,57 @@
 #pragma once
 // The render view: an OpenGL widget showing one image output over a
 // checkerboard, with pan (drag), zoom (wheel, about the cursor), fit
-// (double-click or F) and a pixel probe under the cursor.
+// (double-click or F), 1:1 (1) and a pixel probe under the cursor. The
+// image lives on the GPU (image_program.h); a frame is one textured quad.
+// A preview image (1/2^level of the full size) is drawn over the area of the
+// full-size image, so the picture does not jump when the full frame lands.
+#include "display.h"
+
 #include <darkroom/buffer.h>
 
-#include <QImage>
 #include <QOpenGLWidget>
 
+#include <memory>
+
 namespace editor {
+
+class ImageProgram;
 
 class RenderView : public QOpenGLWidget {
     Q_OBJECT
 public:
     explicit RenderView(QWidget* parent = nullptr);
-    void setImage(darkroom::BufferPtr image);  // null clears
+    ~RenderView() override;
+    // Null clears. `level`: the image is a preview at 1/2^level of the full
+    // size. `tag` is handed back by presented() once the image is on screen.
+    void setImage(darkroom::BufferPtr image, int level = 0, std::uint64_t tag = 0);
     const darkroom::BufferPtr& image() const { return image_; }
+    int level() const { return level_; }
     QStringList modes() const { return modes_; }
     const QString& mode() const { return mode_; }
     void setMode(const QString& mode);
-    const QImage& displayImage() const { return display_; }
     void fit();
-    // Widget position -> image pixel (may be outside the image).
+    double zoom() const { return zoom_; }  // screen pixels per full-resolution pixel
+    QPointF offset() const { return offset_; }
+    // Zoom and the widget position of the image's top-left corner.
+    void setView(double zoom, QPointF offset);
+    // Widget position -> pixel of the shown image (may be outside it).
     QPoint pixelAt(QPointF widgetPos) const;
+    // Channel textures uploaded and mapping passes run so far (tests: pan
+    // and zoom do neither).
+    int uploads() const;
+    int mappings() const;
+    // The OpenGL problem, when the view cannot draw.
+    const QString& glError() const { return glError_; }
 
 signals:
     void modesChanged(const QStringList& modes, const QString& current);
     void probed(const QString& text);
+    // The image set with `tag` reached the screen (the window's buffers swapped).
+    void presented(std::uint64_t tag);
 
 protected:
+    void initializeGL() override;
     void paintGL() override;
     void resizeGL(int w, int h) override;
     void wheelEvent(QWheelEvent* e) override;
@@ -37,14 +61,24 @@ protected:
     void keyPressEvent(QKeyEvent* e) override;
 
 private:
+    QSizeF fullSize() const;  // the image's size in full-resolution pixels
+    void updateProbe(QPointF at);
+
+    std::unique_ptr<ImageProgram> program_;
     darkroom::BufferPtr image_;
+    bool imageChanged_ = false;
+    int level_ = 0;
+    std::uint64_t tag_ = 0, drawnTag_ = 0, presentedTag_ = 0;
+    bool drawnNew_ = false;
     QStringList modes_;
     QString mode_;
-    QImage display_;
-    double zoom_ = 1.0;     // screen pixels per image pixel
+    DisplaySpec spec_;
+    QString glError_;
+    double zoom_ = 1.0;     // screen pixels per full-resolution image pixel
     QPointF offset_;        // widget position of the image's top-left corner
     bool fitted_ = false;   // first image, or after fit(): follow resizes
     QPoint last_;
+    QPointF hover_{-1, -1};
 };
 
 }  // namespace editor

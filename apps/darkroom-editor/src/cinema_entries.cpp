@@ -1,0 +1,60 @@
+#include "cinema_entries.h"
+
+#include "display.h"
+
+#include <darkroom/error.h>
+#include <darkroom/filter.h>
+#include <darkroom/framework/cinema/composable.h>
+#include <darkroom/framework/registry.h>
+#include <darkroom/framework/run_filter.h>
+
+namespace editor {
+
+std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
+    std::vector<CinemaEntry> entries;
+    if (darkroom::isComposableImageSet(db)) {
+        const auto images = darkroom::composableImages(db);
+        for (const auto& image : images)
+            for (const auto& layer : image.layers) {
+                CinemaEntry e;
+                e.parameters = QString::fromStdString(layer.query);
+                e.label = QString::fromStdString(layer.parameters.empty() ? image.id + "/" + layer.id
+                                                                          : layer.parameters);
+                e.row = layer.channels.empty() ? 0 : layer.channels.front().row;
+                entries.push_back(std::move(e));
+            }
+        return entries;
+    }
+    for (std::size_t r = 0; r < db.rowCount(); ++r)
+        entries.push_back({QString::fromStdString(db.entryName(r)), QString::fromStdString(db.formatParameters(r)), r});
+    return entries;
+}
+
+CinemaEntryReader::CinemaEntryReader(const darkroom::Registry& registry, std::string database)
+    : registry_(registry), database_(std::move(database)) {}
+
+CinemaEntryReader::~CinemaEntryReader() = default;
+
+darkroom::BufferPtr CinemaEntryReader::read(const QString& parameters) {
+    if (!filter_) {
+        if (!registry_.filter("CinemaReader"))
+            throw darkroom::Error("no CinemaReader node type is registered (cinema-io plugin)");
+        filter_ = registry_.createFilter("CinemaReader");
+    }
+    darkroom::FilterRunOptions o;
+    o.threads = 1;  // thumbnails stay in the background
+    o.registry = &registry_;
+    const auto result = darkroom::runFilter(*filter_,
+                                            {{"database", {darkroom::Value(database_)}},
+                                             {"parameters", {darkroom::Value(parameters.toStdString())}}},
+                                            o);
+    return result.outputs.at("image").asImage();
+}
+
+QImage thumbnail(const darkroom::Buffer& b, int size) {
+    const QString mode = preferredMode(displayModes(b));
+    if (mode.isEmpty()) return {};
+    return renderDisplay(b, mode).scaled(size, size, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+}
+
+}  // namespace editor

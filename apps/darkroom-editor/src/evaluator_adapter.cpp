@@ -1,0 +1,116 @@
+#include "evaluator_adapter.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/evaluator.h>
+
+#include <chrono>
+#include <functional>
+#include <set>
+
+namespace editor {
+namespace {
+
+std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
+    h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h;
+}
+
+// A node's identity for the cache as the evaluator sees it today: its type
+// and version and, recursively, what feeds which of its ports.
+std::uint64_t signature(const darkroom::Graph& g, const std::string& name,
+                        std::map<std::string, std::uint64_t>& memo) {
+    if (auto it = memo.find(name); it != memo.end()) return it->second;
+    const darkroom::Node* n = g.node(name);
+    std::uint64_t h = mix(std::hash<std::string>{}(n->type), n->version);
+    for (const auto& e : g.edgesInto(name)) {
+        if (!g.node(e.from.node)) continue;
+        h = mix(h, signature(g, e.from.node, memo));
+        h = mix(h, std::hash<std::string>{}(e.from.port + ">" + e.to.port));
+    }
+    return memo[name] = h;
+}
+
+}  // namespace
+
+std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node) {
+    std::set<std::string> needed;
+    std::function<void(const std::string&)> collect = [&](const std::string& n) {
+        if (!graph.node(n) || !needed.insert(n).second) return;
+        for (const auto& e : graph.edgesInto(n)) collect(e.from.node);
+    };
+    collect(node);
+    std::vector<std::string> order;
+    try {
+        for (const auto& n : graph.topologicalOrder())
+            if (needed.count(n)) order.push_back(n);
+    } catch (const std::exception&) {
+        order.assign(needed.begin(), needed.end());  // a cycle: validation will report it
+    }
+    return order;
+}
+
+EvaluatorAdapter::EvaluatorAdapter() : evaluator_(std::make_shared<darkroom::Evaluator>()) {}
+EvaluatorAdapter::~EvaluatorAdapter() = default;
+
+void EvaluatorAdapter::setInputBase(const std::string& folder) {
+    darkroom::EvaluatorOptions o = evaluator_->options();
+    if (o.inputBase == folder) return;
+    o.inputBase = folder;
+    evaluator_->setOptions(o);  // clears the cache: relative paths now mean other files
+    std::lock_guard<std::mutex> lock(mutex_);
+    lastSignature_.clear();
+}
+
+void EvaluatorAdapter::cancel() { evaluator_->cancel(); }
+
+std::uint64_t EvaluatorAdapter::executions(const std::string& node) const { return evaluator_->executions(node); }
+
+double EvaluatorAdapter::lastSeconds(const std::string& node) const { return evaluator_->lastSeconds(node); }
+
+darkroom::BufferPtr EvaluatorAdapter::evaluate(const darkroom::Graph& graph, const std::string& node,
+                                               const std::string& port, const std::function<bool()>& stale,
+                                               FrameProfile* profile) {
+    if (stale && stale()) throw darkroom::Cancelled();
+    const std::vector<std::string> nodes = upstreamOf(graph, node);
+    std::vector<std::uint64_t> before;
+    for (const auto& n : nodes) before.push_back(evaluator_->executions(n));
+
+    darkroom::EvaluatorOptions o = evaluator_->options();
+    darkroom::Evaluator* ev = evaluator_.get();
+    o.onProgress = [stale, ev](double, const std::string&) {
+        if (stale && stale()) ev->cancel();  // also after the run cleared an earlier cancel
+    };
+    evaluator_->setOptions(o);
+    const auto t0 = std::chrono::steady_clock::now();
+    darkroom::BufferPtr image = evaluator_->evaluateImage(graph, node, port);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    std::map<std::string, std::uint64_t> memo;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& n : nodes) lastSignature_[n] = signature(graph, n, memo);
+    }
+    if (profile) {
+        profile->nodes.clear();
+        profile->seconds = wall;
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+            profile->nodes.push_back({nodes[i], evaluator_->executions(nodes[i]) != before[i],
+                                      evaluator_->lastSeconds(nodes[i])});
+    }
+    return image;
+}
+
+double EvaluatorAdapter::predictSeconds(const darkroom::Graph& graph, const std::string& node) const {
+    std::map<std::string, std::uint64_t> memo;
+    double total = 0;
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& n : upstreamOf(graph, node)) {
+        const auto it = lastSignature_.find(n);
+        if (it != lastSignature_.end() && it->second == signature(graph, n, memo)) continue;  // cached
+        if (evaluator_->executions(n) == 0) return -1.0;
+        total += evaluator_->lastSeconds(n);
+    }
+    return total;
+}
+
+}  // namespace editor

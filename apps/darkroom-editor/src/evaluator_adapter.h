@@ -1,0 +1,87 @@
+#pragma once
+// Everything the editor asks of darkroom::Evaluator, in one place, so a new
+// evaluator API is ported here and nowhere else. The editor needs:
+// - an image output of a graph copy, with a "stale" question polled while it
+//   runs (a newer edit arrived): the run is then cancelled;
+// - per node of the evaluated part of the graph: did it run or come from the
+//   cache, and how long it took (for the badges and the status bar);
+// - a prediction of how long the next evaluation will take (which nodes
+//   would run again, times their last duration), to choose the preview size.
+//
+// Today's Evaluator offers cancel(), executions() and lastSeconds(); a
+// profile is derived by comparing execution counts before and after a run.
+// Cancel is a flag the evaluator clears when a run starts, so a cancel that
+// lands just before that would be lost: the adapter re-raises it from the
+// progress callback, which the evaluator calls as every node finishes and
+// whenever a filter reports progress.
+#include <darkroom/buffer.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace darkroom {
+class Evaluator;
+class Graph;
+}  // namespace darkroom
+
+namespace editor {
+
+struct NodeRun {
+    std::string node;
+    bool ran = false;      // executed in this evaluation (else its result was cached)
+    double seconds = 0;    // this run's time if ran, else the time of its last run
+};
+
+struct FrameProfile {
+    std::vector<NodeRun> nodes;  // the evaluated part of the graph, in dependency order
+    double seconds = 0;          // wall time of the evaluation
+    int ran() const {
+        int n = 0;
+        for (const auto& r : nodes) n += r.ran;
+        return n;
+    }
+};
+
+class EvaluatorAdapter {
+public:
+    EvaluatorAdapter();
+    ~EvaluatorAdapter();
+    EvaluatorAdapter(const EvaluatorAdapter&) = delete;
+    EvaluatorAdapter& operator=(const EvaluatorAdapter&) = delete;
+
+    // Relative paths in the graph resolve here (the pipeline's folder).
+    void setInputBase(const std::string& folder);
+
+    // Evaluates node.port. `stale` (may be empty) is asked before the run and
+    // whenever the evaluator reports progress; once it says true the run is
+    // cancelled and darkroom::Cancelled thrown. Other errors as Evaluator's.
+    darkroom::BufferPtr evaluate(const darkroom::Graph& graph, const std::string& node,
+                                 const std::string& port, const std::function<bool()>& stale,
+                                 FrameProfile* profile);
+    // Thread-safe: the running evaluation stops at its next check.
+    void cancel();
+
+    // Seconds the nodes that would run again for node.port took last time;
+    // negative when one of them never ran here (no estimate).
+    double predictSeconds(const darkroom::Graph& graph, const std::string& node) const;
+
+    // Thread-safe counters (tests and statistics).
+    std::uint64_t executions(const std::string& node) const;
+    double lastSeconds(const std::string& node) const;
+
+private:
+    std::shared_ptr<darkroom::Evaluator> evaluator_;
+    // What each node looked like when this adapter last evaluated it: its
+    // version and the versions feeding it, to predict which nodes are dirty.
+    mutable std::mutex mutex_;
+    std::map<std::string, std::uint64_t> lastSignature_;
+};
+
+// The nodes `node` depends on (itself included), in dependency order.
+std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node);
+
+}  // namespace editor
