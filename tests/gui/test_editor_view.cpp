@@ -28,18 +28,18 @@ BufferPtr testImage() {
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
             const std::size_t i = std::size_t(y) * kW + x;
-            b->hostFloat("R")[i] = float(x) / (kW - 1);
-            b->hostFloat("G")[i] = float(y) / (kH - 1);
-            b->hostFloat("B")[i] = 0.002f * float(x);  // crosses sRGB's linear segment
-            b->hostFloat("A")[i] = x < 4 ? 0.0f : x < 8 ? 0.5f : 1.0f;
-            b->hostFloat("Z")[i] = (x + y) % 9 == 0 ? inf : 2.0f + 0.1f * float(x) + 0.05f * float(y);
+            b->writeFloat("R")[i] = float(x) / (kW - 1);
+            b->writeFloat("G")[i] = float(y) / (kH - 1);
+            b->writeFloat("B")[i] = 0.002f * float(x);  // crosses sRGB's linear segment
+            b->writeFloat("A")[i] = x < 4 ? 0.0f : x < 8 ? 0.5f : 1.0f;
+            b->writeFloat("Z")[i] = (x + y) % 9 == 0 ? inf : 2.0f + 0.1f * float(x) + 0.05f * float(y);
             const float nx = std::cos(0.15f * float(x)), ny = std::sin(0.15f * float(x));
-            b->hostFloat("N.x")[i] = (x == 5 && y == 5) ? nan : nx * 0.8f;
-            b->hostFloat("N.y")[i] = ny * 0.8f;
-            b->hostFloat("N.z")[i] = 0.6f;
-            b->hostFloat("value")[i] = (x == 10 && y > 10) ? nan : std::sin(0.3f * float(x)) * float(y);
-            b->hostFloat("AO")[i] = float((x * 7 + y * 3) % 17) / 16.0f;
-            b->hostUInt("id")[i] = std::uint32_t(x / 10 + 4 * (y / 8));
+            b->writeFloat("N.x")[i] = (x == 5 && y == 5) ? nan : nx * 0.8f;
+            b->writeFloat("N.y")[i] = ny * 0.8f;
+            b->writeFloat("N.z")[i] = 0.6f;
+            b->writeFloat("value")[i] = (x == 10 && y > 10) ? nan : std::sin(0.3f * float(x)) * float(y);
+            b->writeFloat("AO")[i] = float((x * 7 + y * 3) % 17) / 16.0f;
+            b->writeUInt("id")[i] = std::uint32_t(x / 10 + 4 * (y / 8));
         }
     return b;
 }

@@ -16,9 +16,9 @@ struct ParaViewCamera {
     double parallelScale = 1;  // half the view height in world units (vtkCamera::ParallelScale)
 };
 
-// The Camera for an image of width x height. Throws darkroom::Error starting
-// with `who` when the position equals the focal point, the view up is
+// The Camera for an image of width x height. Throws darkroom::Error (the host
+// names the node) when the position equals the focal point, the view up is
 // parallel to the view direction, or the angle or scale is out of range.
-Camera cameraFromParaView(const ParaViewCamera& v, int width, int height, const std::string& who);
+Camera cameraFromParaView(const ParaViewCamera& v, int width, int height);
 
 }  // namespace darkroom

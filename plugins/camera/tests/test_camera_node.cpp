@@ -25,6 +25,7 @@ FilterRunResult run(Inputs inputs) {
     auto f = test::pluginRegistry().createFilter("Camera");
     FilterRunOptions o;
     o.threads = 2;
+    o.nodeType = "Camera";
     return runFilter(*f, inputs, o);
 }
 
@@ -116,7 +117,7 @@ TEST(CameraNode, WhenMissingKeepsAnExistingCamera) {
 TEST(CameraNode, BadValuesAreNamed) {
     const Value img(depthImage(4, 4, 0.5f));
     EXPECT_THAT(errorOf({{"image", {img}}, {"focalPoint", {Value(Vec3{0, 0, 1})}}}),
-                HasSubstr("Camera 'runFilter': position and focalPoint must be distinct"));
+                HasSubstr("node 'runFilter' (Camera): position and focalPoint must be distinct"));
     EXPECT_THAT(errorOf({{"image", {img}}, {"viewUp", {Value(Vec3{0, 0, 2})}}}),
                 HasSubstr("viewUp must be a non-zero vector not parallel to the view direction"));
     EXPECT_THAT(errorOf({{"image", {img}}, {"depth", {Value("normalised")}}, {"near", {Value(3.0)}},
