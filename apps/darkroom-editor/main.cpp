@@ -1,10 +1,13 @@
 // darkroom-editor: the node-graph editor. Plugins come from the same search
 // path as the runner's (next to the executable, DARKROOM_PLUGIN_PATH).
+#include "autosave.h"
+#include "document.h"
 #include "main_window.h"
 
 #include <darkroom/framework/registry.h>
 
 #include <QApplication>
+#include <QMessageBox>
 #include <QTimer>
 
 int main(int argc, char** argv) {
@@ -20,6 +23,24 @@ int main(int argc, char** argv) {
         for (const QString& a : QApplication::arguments().mid(1)) {
             if (a.endsWith(".cdb") || a.endsWith(".cdb/")) w.openCinema(a);
             else w.openPipeline(a);
+        }
+        // An editor that crashed (a plugin failing inside execute() takes the
+        // process with it) left its unsaved graph behind: offer it back.
+        for (const editor::Recovery& r : editor::Autosave::leftBehind()) {
+            const QString what = r.originalPath.isEmpty() ? QString("an unsaved pipeline") : r.originalPath;
+            const auto answer = QMessageBox::question(
+                &w, "Recover unsaved work",
+                "An earlier darkroom-editor ended without saving " + what + " (autosaved " + r.savedAt +
+                    ").\nRestore it?",
+                QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+            if (answer == QMessageBox::Yes) {
+                QStringList messages;
+                if (editor::Autosave::restore(r, w.document(), messages))
+                    w.logMessage("Restored " + what + " from " + r.file);
+                for (const QString& m : messages) w.logMessage(m);
+                break;
+            }
+            editor::Autosave::drop(r);
         }
     });
     return app.exec();

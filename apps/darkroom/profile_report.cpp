@@ -14,13 +14,14 @@ void printProfile(const std::string& title, const std::vector<NodeProfile>& node
         typeWidth = std::max(typeWidth, n.type.size());
     }
     std::string out = fmt::format("profile: {} ({:.1f} ms)\n", title, wallSeconds * 1e3);
-    out += fmt::format("  {:<{}}  {:<{}}  {:<11}  {:>9}  {:>9}\n", "node", nameWidth, "type", typeWidth, "status",
-                       "ms", "MB new");
+    out += fmt::format("  {:<{}}  {:<{}}  {:<11}  {:>9}  {:>9}  {}\n", "node", nameWidth, "type", typeWidth,
+                       "status", "ms", "MB new", "why it ran");
     std::size_t ran = 0, bytes = 0;
     double seconds = 0;
     for (const auto& n : nodes) {
-        out += fmt::format("  {:<{}}  {:<{}}  {:<11}  {:>9.2f}  {:>9.1f}\n", n.node, nameWidth, n.type, typeWidth,
-                           toString(n.status), n.seconds * 1e3, double(n.bytesAllocated) / (1 << 20));
+        out += fmt::format("  {:<{}}  {:<{}}  {:<11}  {:>9.2f}  {:>9.1f}  {}\n", n.node, nameWidth, n.type, typeWidth,
+                           toString(n.status), n.seconds * 1e3, double(n.bytesAllocated) / (1 << 20),
+                           n.status == NodeProfile::Status::Ran ? n.reason : "");
         ran += n.status == NodeProfile::Status::Ran;
         seconds += n.seconds;
         bytes += n.bytesAllocated;

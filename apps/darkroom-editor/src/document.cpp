@@ -67,6 +67,21 @@ void Document::clear() {
     emit changed();
 }
 
+bool Document::restore(const QString& text, const QString& originalPath, const QString& source,
+                       QStringList& messages) {
+    darkroom::Diagnostics d;
+    darkroom::Graph g = darkroom::parsePipeline(text.toStdString(), source.toStdString(), *registry_, d);
+    for (const auto& x : d) messages << QString::fromStdString(x.str());
+    if (darkroom::hasErrors(d) && g.nodes().empty()) return false;
+    undo_.clear();
+    graph_ = std::move(g);
+    path_ = originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath();
+    undo_.resetClean();  // recovered edits are unsaved
+    emit pathChanged();
+    emit changed();
+    return true;
+}
+
 bool Document::load(const QString& path, QStringList& messages) {
     darkroom::Diagnostics d;
     darkroom::Graph g = darkroom::loadPipeline(path.toStdString(), *registry_, d);

@@ -36,6 +36,10 @@ public:
     // returns false when the file could not be read at all.
     bool load(const QString& path, QStringList& messages);
     bool save(const QString& path, QString* error);
+    // Replaces the graph with pipeline text recovered from an autosave
+    // (`source` names it in messages), as an unsaved edit of `originalPath`
+    // (relative paths resolve there). False when nothing could be read.
+    bool restore(const QString& text, const QString& originalPath, const QString& source, QStringList& messages);
     QString uniqueName(const QString& base) const;
 
 signals:

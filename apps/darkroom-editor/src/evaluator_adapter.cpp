@@ -61,7 +61,10 @@ void EvaluatorAdapter::setInputBase(const std::string& folder) {
     lastSignature_.clear();
 }
 
-void EvaluatorAdapter::cancel() { evaluator_->cancel(); }
+void EvaluatorAdapter::cancel() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (running_) *running_ = true;
+}
 
 std::uint64_t EvaluatorAdapter::executions(const std::string& node) const { return evaluator_->executions(node); }
 
@@ -72,17 +75,26 @@ darkroom::BufferPtr EvaluatorAdapter::evaluate(const darkroom::Graph& graph, con
                                                FrameProfile* profile) {
     if (stale && stale()) throw darkroom::Cancelled();
     const std::vector<std::string> nodes = upstreamOf(graph, node);
-    std::vector<std::uint64_t> before;
-    for (const auto& n : nodes) before.push_back(evaluator_->executions(n));
+    auto flag = std::make_shared<std::atomic<bool>>(false);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        running_ = flag;
+    }
+    struct Done {
+        EvaluatorAdapter* self;
+        ~Done() {
+            std::lock_guard<std::mutex> lock(self->mutex_);
+            self->running_.reset();
+        }
+    } done{this};
 
     darkroom::EvaluatorOptions o = evaluator_->options();
-    darkroom::Evaluator* ev = evaluator_.get();
-    o.onProgress = [stale, ev](double, const std::string&) {
-        if (stale && stale()) ev->cancel();  // also after the run cleared an earlier cancel
+    o.onProgress = [stale, flag](double, const std::string&) {
+        if (stale && stale()) *flag = true;
     };
     evaluator_->setOptions(o);
     const auto t0 = std::chrono::steady_clock::now();
-    darkroom::BufferPtr image = evaluator_->evaluateImage(graph, node, port);
+    darkroom::BufferPtr image = evaluator_->evaluateImage(graph, node, port, flag.get());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::map<std::string, std::uint64_t> memo;
@@ -93,9 +105,15 @@ darkroom::BufferPtr EvaluatorAdapter::evaluate(const darkroom::Graph& graph, con
     if (profile) {
         profile->nodes.clear();
         profile->seconds = wall;
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-            profile->nodes.push_back({nodes[i], evaluator_->executions(nodes[i]) != before[i],
-                                      evaluator_->lastSeconds(nodes[i])});
+        std::map<std::string, darkroom::NodeProfile> byNode;
+        for (auto& p : evaluator_->lastProfile()) byNode[p.node] = p;
+        for (const auto& n : nodes) {
+            const auto it = byNode.find(n);
+            const bool ran = it != byNode.end() && it->second.status == darkroom::NodeProfile::Status::Ran;
+            const bool reassembled =
+                it != byNode.end() && it->second.status == darkroom::NodeProfile::Status::Reassembled;
+            profile->nodes.push_back({n, ran, reassembled, evaluator_->lastSeconds(n)});
+        }
     }
     return image;
 }

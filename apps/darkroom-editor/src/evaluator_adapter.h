@@ -8,14 +8,13 @@
 // - a prediction of how long the next evaluation will take (which nodes
 //   would run again, times their last duration), to choose the preview size.
 //
-// Today's Evaluator offers cancel(), executions() and lastSeconds(); a
-// profile is derived by comparing execution counts before and after a run.
-// Cancel is a flag the evaluator clears when a run starts, so a cancel that
-// lands just before that would be lost: the adapter re-raises it from the
-// progress callback, which the evaluator calls as every node finishes and
-// whenever a filter reports progress.
+// Each evaluation gets a cancel flag of its own (Evaluator's per-run flag):
+// cancel() and a `stale` answer set it, and a flag set just as the run starts
+// is never lost. The profile is the evaluator's own (ran, re-assembled around
+// new input planes, or cached).
 #include <darkroom/buffer.h>
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
@@ -32,8 +31,9 @@ namespace editor {
 
 struct NodeRun {
     std::string node;
-    bool ran = false;      // executed in this evaluation (else its result was cached)
-    double seconds = 0;    // this run's time if ran, else the time of its last run
+    bool ran = false;          // executed in this evaluation (else its result was cached)
+    bool reassembled = false;  // not executed, but its output re-made around new input planes
+    double seconds = 0;        // this run's time if ran, else the time of its last run
 };
 
 struct FrameProfile {
@@ -75,6 +75,8 @@ public:
 
 private:
     std::shared_ptr<darkroom::Evaluator> evaluator_;
+    // The flag of the evaluation in progress (null between evaluations).
+    std::shared_ptr<std::atomic<bool>> running_;
     // What each node looked like when this adapter last evaluated it: its
     // version and the versions feeding it, to predict which nodes are dirty.
     mutable std::mutex mutex_;

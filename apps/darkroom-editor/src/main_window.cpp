@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "autosave.h"
+
 #include "cinema_panel.h"
 #include "document.h"
 #include "evaluation.h"
@@ -28,6 +30,7 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     : QMainWindow(parent), doc_(new Document(registry, this)), eval_(new Evaluation(this)) {
     setAcceptDrops(true);
     setDockNestingEnabled(true);
+    autosave_ = new Autosave(doc_, this);
     scene_ = new GraphScene(doc_, this);
     graphView_ = new GraphView(scene_);
 

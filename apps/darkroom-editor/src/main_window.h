@@ -21,6 +21,7 @@ class QPlainTextEdit;
 
 namespace editor {
 
+class Autosave;
 class CinemaPanel;
 class Document;
 class Evaluation;
@@ -39,6 +40,7 @@ public:
     ~MainWindow() override;
 
     Document* document() const { return doc_; }
+    Autosave* autosave() const { return autosave_; }
     GraphScene* scene() const { return scene_; }
     GraphView* graphView() const { return graphView_; }
     RenderView* renderView() const { return render_; }
@@ -91,6 +93,7 @@ private:
     bool maybeSave();
 
     Document* doc_;
+    Autosave* autosave_;
     GraphScene* scene_;
     GraphView* graphView_;
     RenderView* render_;

@@ -2,6 +2,8 @@
 // files, drag and drop.
 #include "main_window.h"
 
+#include "autosave.h"
+
 #include "cinema_panel.h"
 #include "display.h"
 #include "document.h"
@@ -231,6 +233,7 @@ void MainWindow::dropEvent(QDropEvent* e) {
 void MainWindow::closeEvent(QCloseEvent* e) {
     if (maybeSave()) {
         saveLayout();
+        autosave_->discard();  // a clean exit leaves nothing to recover
         e->accept();
     } else {
         e->ignore();

@@ -358,11 +358,17 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
 
     // The cache: same value inputs, same planes read, same files.
     bool hit = st.valid && st.valueKey == key;
+    if (!st.valid) profile.reason = "no cached result";
+    else if (!hit) profile.reason = "a value input changed";
     for (std::size_t i = 0; hit && i < st.reads.size(); ++i) {
         const Buffer* b = imageAt(inputs, st.reads[i].port, st.reads[i].index);
-        hit = b && stillMatches(st.reads[i], *b);
+        hit = b && stillMatches(st.reads[i], *b, &profile.reason);
+        if (!b) profile.reason = "input '" + st.reads[i].port + "' is gone";
     }
-    for (std::size_t i = 0; hit && i < st.files.size(); ++i) hit = stampOf(st.files[i].path) == st.files[i];
+    for (std::size_t i = 0; hit && i < st.files.size(); ++i) {
+        hit = stampOf(st.files[i].path) == st.files[i];
+        if (!hit) profile.reason = "file changed: " + st.files[i].path;
+    }
 
     if (hit) {
         std::map<std::string, Value> outputs = st.outputs;

@@ -241,15 +241,19 @@ NodeResult runNode(const NodeCall& call) {
     return r;
 }
 
-bool stillMatches(const InputRead& read, const Buffer& b) {
-    if (b.width() != read.width || b.height() != read.height) return false;
-    if (read.channelList && hashing::hashChannels(b.channels()) != read.channelListHash) return false;
-    if (read.metadata && hashing::hashMetadata(b.metadata()) != read.metadataHash) return false;
+bool stillMatches(const InputRead& read, const Buffer& b, std::string* why) {
+    auto differs = [&](const std::string& what) {
+        if (why) *why = "input '" + read.port + "' changed: " + what;
+        return false;
+    };
+    if (b.width() != read.width || b.height() != read.height) return differs("its size");
+    if (read.channelList && hashing::hashChannels(b.channels()) != read.channelListHash)
+        return differs("its channel list");
+    if (read.metadata && hashing::hashMetadata(b.metadata()) != read.metadataHash) return differs("its metadata");
     for (const auto& p : read.planes) {
         const PlanePtr plane = b.plane(p.name);
         const std::uint64_t id = plane ? plane->id() : 0;
-        if (id != p.id) return false;
-        if (plane && int(*b.channelType(p.name)) != p.type) return false;
+        if (id != p.id || (plane && int(*b.channelType(p.name)) != p.type)) return differs("channel " + p.name);
     }
     return true;
 }

@@ -92,8 +92,9 @@ std::string nodeLabel(const std::string& name, const std::string& type);
 // Throws darkroom::Error beginning with nodeLabel(), or Cancelled.
 NodeResult runNode(const NodeCall& call);
 
-// What `read` saw in `buffer` is still what `buffer` holds.
-bool stillMatches(const InputRead& read, const Buffer& buffer);
+// What `read` saw in `buffer` is still what `buffer` holds; otherwise `why`
+// (when given) says what differs.
+bool stillMatches(const InputRead& read, const Buffer& buffer, std::string* why = nullptr);
 
 // The output a derived one would be with `input` as its input: the recorded
 // fresh planes of `previous` around the planes of `input`.

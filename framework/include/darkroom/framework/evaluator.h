@@ -44,6 +44,7 @@ struct NodeProfile {
     Status status = Status::Cached;
     double seconds = 0;              // execution time (0 when not executed)
     std::size_t bytesAllocated = 0;  // new planes it allocated
+    std::string reason;              // why it ran: "no cached result", "value inputs changed", ...
 };
 DARKROOM_API const char* toString(NodeProfile::Status s);
 
