@@ -170,10 +170,14 @@ void SpeedTest::previewWhileDraggingThenSettles() {
     const BufferPtr expected = reference.evaluateImage(w_->document()->graph(), "colour", "image");
     QVERIFY(identical(*expected, *w_->renderView()->image()));
 
-    // The preview evaluator read and downsampled the source once; only the
-    // colour mapping ran again per preview.
+    // The preview evaluator read the source once and downsampled it once per
+    // preview size (a drag whose previews overrun the budget gets coarser, and
+    // the warm-up after the first full frame may have used another size);
+    // only the colour mapping ran again per preview.
     QCOMPARE(ev->previewExecutions("read"), std::uint64_t(1));
-    QCOMPARE(ev->previewExecutions(QString::fromStdString(editor::previewNodeName("read", "image"))), std::uint64_t(1));
+    // There are five preview sizes (1/2 to 1/32 of each side).
+    const auto resized = ev->previewExecutions(QString::fromStdString(editor::previewNodeName("read", "image")));
+    QVERIFY2(resized >= 1 && resized <= 5, qPrintable(QString("Resize ran %1 times").arg(resized)));
     QVERIFY(ev->previewExecutions("colour") >= std::uint64_t(previews));
     // The full-resolution evaluator kept its reader result and did not run per step.
     QCOMPARE(ev->executions("read"), readRuns);
