@@ -9,7 +9,7 @@ packages=(
   # toolchain
   g++ cmake ninja-build ccache pkg-config git
   # libraries
-  libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
+  libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
   # the editor (Qt Widgets, OpenGL and OpenGLWidgets, QTest), the X platform

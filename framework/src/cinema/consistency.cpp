@@ -2,12 +2,13 @@
 // existence, Spec D size and channels per FILE column, CIS shapes and dtypes.
 #include "cis_channel.h"
 
+#include "../io/image_header.h"
+
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/composable.h>
 #include <darkroom/framework/cinema/consistency.h>
 #include <darkroom/framework/formats/npy.h>
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <cctype>
@@ -46,12 +47,10 @@ std::optional<Header> readHeader(const std::string& path) {
         }
         return h;
     }
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw Error(fmt::format("{}: cannot read the image header: {}", path, OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    h.width = spec.width;
-    h.height = spec.height;
-    for (const auto& c : spec.channelnames) h.channels.push_back(c);
+    const io::ImageHeader image = io::readImageHeader(path);
+    h.width = image.width;
+    h.height = image.height;
+    for (const auto& c : image.channels) h.channels.push_back(c.name);
     return h;
 }
 

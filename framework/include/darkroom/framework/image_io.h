@@ -1,6 +1,9 @@
 #pragma once
-// Reading and writing images with OpenImageIO, kept behind this header so
-// OIIO's heavy headers stay out of everything else.
+// Reading and writing images. EXR goes through OpenEXR and PNG through libpng
+// directly; every other format through OpenImageIO, in a module the framework
+// opens the first time such a file is met (framework/oiio/module.h), so runs
+// on EXR and PNG alone never load OpenImageIO's hundreds of libraries. Files
+// are the same whichever library handles them.
 #include <darkroom/buffer.h>
 #include <darkroom/export.h>
 
@@ -23,8 +26,9 @@ struct ImageWriteOptions {
     std::vector<std::string> channels;
 };
 
-// Reads PNG, JPEG, TIFF, EXR (and whatever else OIIO reads), first subimage,
-// its data window.
+// Reads PNG, JPEG, TIFF, EXR (and whatever else OIIO reads), first subimage
+// (EXR: first part), its data window. Only regular files are opened (a FIFO
+// or a device is refused). EXR is recognised by its magic number.
 // - 8/16-bit integer channels are decoded from sRGB to linear float (alpha is
 //   not decoded; a file tagged linear is not decoded) and keep OIIO's names:
 //   R, G, B, A, or Y (and A) for grey.
@@ -38,7 +42,8 @@ struct ImageWriteOptions {
 DARKROOM_API std::shared_ptr<WritableBuffer> readImage(const std::string& path);
 
 // Writes atomically (temporary file in the same folder, then rename); the
-// format follows the extension. The folder must exist.
+// format follows the extension. The folder must exist. PNG is written with
+// zlib level 2 and the "up" filter (fast; docs/formats.md).
 // - EXR: every channel (see options.channels), float32 unless halfFloat,
 //   uint32 kept. The header holds the camera as darkroom:camera:position,
 //   :forward, :up (double vectors, exact), :projection ("perspective" or

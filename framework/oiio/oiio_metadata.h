@@ -1,6 +1,6 @@
 #pragma once
 // BufferMetadata <-> OIIO ImageSpec attributes (the darkroom:* names that
-// image_io.h documents). Internal to the framework.
+// image_io.h documents). Part of the OpenImageIO module (module.h).
 #include <darkroom/buffer.h>
 
 #include <OpenImageIO/imageio.h>

@@ -1,4 +1,4 @@
-#include "image_metadata.h"
+#include "oiio_metadata.h"
 
 #include <darkroom/error.h>
 #include <darkroom/port.h>

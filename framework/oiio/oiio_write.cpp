@@ -1,10 +1,14 @@
-// writeImage(): a Buffer -> EXR (every channel, exact) or an 8-bit sRGB file.
-#include "image_metadata.h"
-#include "oiio_message.h"
+// A Buffer -> any format OpenImageIO writes: EXR (every channel, exact) or an
+// 8-bit sRGB file. Part of the OpenImageIO module (module.h); the framework
+// writes EXR and PNG itself.
+#include "module.h"
+#include "oiio_metadata.h"
+
+#include "../src/io/eight_bit.h"
+#include "../src/io/oiio_message.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
 #include <darkroom/srgb.h>
 
 #include <OpenImageIO/imageio.h>
@@ -16,7 +20,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace darkroom {
+namespace darkroom::oiio_module {
 
 namespace {
 
@@ -125,66 +129,20 @@ void writeExr(const Buffer& image, const std::string& path, const ImageWriteOpti
     writeAtomically(path, out, spec, OIIO::TypeUnknown, data.data());
 }
 
-std::vector<std::string> defaultEightBitChannels(const Buffer& image, const std::string& path) {
-    auto isFloat = [&](const char* n) { return image.channelType(n) == ChannelType::Float32; };
-    std::vector<std::string> ch;
-    if (isFloat("R") && isFloat("G") && isFloat("B"))
-        ch = {"R", "G", "B"};
-    else if (isFloat("Y"))
-        ch = {"Y"};
-    else {
-        for (const auto& c : image.channels())
-            if (c.type == ChannelType::Float32 && c.name != "Z" && c.name != "A") ch.push_back(c.name);
-        if (ch.size() != 1)
-            fail(path, "cannot choose which channels to write as 8-bit grey or colour from " +
-                           listChannels(image) + "; name them (ImageWriter's 'channels')");
-    }
-    if (isFloat("A")) ch.push_back("A");
-    return ch;
-}
-
 void writeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
                    OIIO::ImageOutput& out) {
-    std::vector<std::string> names =
-        options.channels.empty() ? defaultEightBitChannels(image, path) : options.channels;
-    if (names.empty() || names.size() > 4)
-        fail(path, "an 8-bit image takes 1 to 4 channels (grey, grey+alpha, RGB, RGBA), not " +
-                       std::to_string(names.size()));
-    // JPEG has no alpha: keep grey or RGB.
-    if (!out.supports("alpha") && (names.size() == 2 || names.size() == 4)) names.pop_back();
-    const int n = int(names.size());
-    const bool hasAlpha = n == 2 || n == 4;
-    std::vector<const float*> src;
-    for (const auto& name : names) {
-        const float* p = image.hostFloat(name);
-        if (!p)
-            fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " +
-                           listChannels(image));
-        src.push_back(p);
-    }
-
-    // Linear -> sRGB code value (round to nearest), NaN -> 0; alpha is stored linearly.
-    auto encode = [](float v, bool alpha) -> unsigned char {
-        if (!(v > 0.0f)) return 0;  // also NaN
-        if (v >= 1.0f) return 255;
-        return (unsigned char)std::lround((alpha ? v : linearToSrgb(v)) * 255.0f);
-    };
-
-    const std::size_t pixels = image.pixelCount();
-    std::vector<unsigned char> data(pixels * std::size_t(n));
-    for (std::size_t p = 0; p < pixels; ++p)
-        for (int c = 0; c < n; ++c) data[p * n + c] = encode(src[std::size_t(c)][p], hasAlpha && c == n - 1);
-
+    const io::EightBitPixels pixels = io::encodeEightBit(image, path, options, out.supports("alpha"));
+    const int n = pixels.channels;
     OIIO::ImageSpec spec(image.width(), image.height(), n, OIIO::TypeDesc::UINT8);
     spec.channelnames.clear();
     static const char* const grey[] = {"Y", "A"};
     static const char* const rgba[] = {"R", "G", "B", "A"};
     for (int c = 0; c < n; ++c) spec.channelnames.emplace_back(n <= 2 ? grey[c] : rgba[c]);
-    spec.alpha_channel = hasAlpha ? n - 1 : -1;
+    spec.alpha_channel = pixels.alpha ? n - 1 : -1;
     spec.attribute("oiio:ColorSpace", "sRGB");
     // The data is straight alpha: OIIO must not divide it by alpha again.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    writeAtomically(path, out, spec, OIIO::TypeDesc::UINT8, data.data());
+    writeAtomically(path, out, spec, OIIO::TypeDesc::UINT8, pixels.data.data());
 }
 
 }  // namespace
@@ -205,4 +163,4 @@ void writeImage(const Buffer& image, const std::string& path, const ImageWriteOp
         writeEightBit(image, path, options, *out);
 }
 
-}  // namespace darkroom
+}  // namespace darkroom::oiio_module

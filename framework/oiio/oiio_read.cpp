@@ -1,9 +1,11 @@
-// readImage(): any OIIO-readable file -> a planar Buffer (see image_io.h).
-#include "image_metadata.h"
-#include "oiio_message.h"
+// Any OpenImageIO-readable file -> a planar Buffer (see image_io.h), and its
+// header alone. Part of the OpenImageIO module (module.h).
+#include "module.h"
+#include "oiio_metadata.h"
+
+#include "../src/io/oiio_message.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
 #include <darkroom/srgb.h>
 
 #include <OpenImageIO/imageio.h>
@@ -14,7 +16,7 @@
 #include <filesystem>
 #include <set>
 
-namespace darkroom {
+namespace darkroom::oiio_module {
 
 namespace {
 
@@ -150,4 +152,29 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
     return buffer;
 }
 
-}  // namespace darkroom
+io::ImageHeader readHeader(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) fail(path, oiioError(nullptr));
+    const OIIO::ImageSpec& spec = in->spec();
+    io::ImageHeader h;
+    h.width = spec.width;
+    h.height = spec.height;
+    std::vector<std::string> names;
+    for (int c = 0; c < spec.nchannels; ++c)
+        names.push_back(c < int(spec.channelnames.size()) && !spec.channelnames[c].empty()
+                            ? spec.channelnames[c]
+                            : "channel" + std::to_string(c));
+    BufferMetadata meta;
+    std::vector<std::string> order;
+    try {
+        order = io::getMetadata(spec, meta);
+    } catch (const Error&) {
+        // A malformed camera is readImage()'s to report; the header is still what it is.
+    }
+    for (int i : channelPermutation(names, order))
+        h.channels.push_back(
+            {names[std::size_t(i)], kindOf(spec.channelformat(i)) == Kind::UInt ? ChannelType::UInt32 : ChannelType::Float32});
+    return h;
+}
+
+}  // namespace darkroom::oiio_module

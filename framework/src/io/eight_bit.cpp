@@ -1,0 +1,79 @@
+#include "eight_bit.h"
+
+#include <darkroom/error.h>
+#include <darkroom/srgb.h>
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace darkroom::io {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+    throw Error("cannot write image '" + path + "': " + why);
+}
+
+std::string listChannels(const Buffer& b) {
+    std::string s;
+    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name + " (" + toString(c.type) + ")";
+    return s.empty() ? std::string("none") : s;
+}
+
+std::vector<std::string> defaultChannels(const Buffer& image, const std::string& path) {
+    auto isFloat = [&](const char* n) { return image.channelType(n) == ChannelType::Float32; };
+    std::vector<std::string> ch;
+    if (isFloat("R") && isFloat("G") && isFloat("B"))
+        ch = {"R", "G", "B"};
+    else if (isFloat("Y"))
+        ch = {"Y"};
+    else {
+        for (const auto& c : image.channels())
+            if (c.type == ChannelType::Float32 && c.name != "Z" && c.name != "A") ch.push_back(c.name);
+        if (ch.size() != 1)
+            fail(path, "cannot choose which channels to write as 8-bit grey or colour from " + listChannels(image) +
+                           "; name them (ImageWriter's 'channels')");
+    }
+    if (isFloat("A")) ch.push_back("A");
+    return ch;
+}
+
+}  // namespace
+
+EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+                              bool alphaAllowed) {
+    std::vector<std::string> names = options.channels.empty() ? defaultChannels(image, path) : options.channels;
+    if (names.empty() || names.size() > 4)
+        fail(path, "an 8-bit image takes 1 to 4 channels (grey, grey+alpha, RGB, RGBA), not " +
+                       std::to_string(names.size()));
+    if (!alphaAllowed && (names.size() == 2 || names.size() == 4)) names.pop_back();
+    EightBitPixels out;
+    out.channels = int(names.size());
+    out.alpha = out.channels == 2 || out.channels == 4;
+    std::vector<const float*> src;
+    for (const auto& name : names) {
+        const float* p = image.hostFloat(name);
+        if (!p) fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " + listChannels(image));
+        src.push_back(p);
+    }
+    // Linear -> sRGB code value (round to nearest), NaN -> 0; alpha is stored linearly.
+    auto encode = [](float v, bool alpha) -> unsigned char {
+        if (!(v > 0.0f)) return 0;  // also NaN
+        if (v >= 1.0f) return 255;
+        return (unsigned char)std::lround((alpha ? v : linearToSrgb(v)) * 255.0f);
+    };
+    const std::size_t pixels = image.pixelCount();
+    const int n = out.channels;
+    out.data.resize(pixels * std::size_t(n));
+    // sRGB encoding (a pow per value) costs more than the rest of a PNG
+    // write at the fast compression levels: rows in parallel.
+    const std::size_t w = std::size_t(image.width());
+    tbb::parallel_for(0, image.height(), [&](int y) {
+        for (std::size_t p = std::size_t(y) * w; p < std::size_t(y + 1) * w; ++p)
+            for (int c = 0; c < n; ++c) out.data[p * n + c] = encode(src[std::size_t(c)][p], out.alpha && c == n - 1);
+    });
+    return out;
+}
+
+}  // namespace darkroom::io
