@@ -24,7 +24,8 @@ private:
                    "Surface colour R, G, B (the albedo), depth Z and the camera; world-space normals N.x, N.y, N.z "
                    "when captured",
                    {"Z", "R", "G", "B"}};
-    OptionalImageIn ao_{"ao", "Optional ambient occlusion (e.g. SSAO's output): multiplies the ambient term only"};
+    OptionalImageIn ao_{"ao", "Optional ambient occlusion (e.g. SSAO's output): multiplies the ambient term only",
+                        {"AO"}};
     StringIn aoChannel_{"aoChannel", "AO", "Channel of `ao` holding the occlusion (1 = open)"};
     EnumIn<Normals> normals_{"normals",
                              {{Normals::Auto, "auto"}, {Normals::Captured, "captured"},
