@@ -80,7 +80,27 @@ std::vector<Tick> linearTicks(double minimum, double maximum, int count) {
         return ticks;
     }
     count = std::max(2, count);
-    const double step = niceNumber(niceNumber(hi - lo, false) / (count - 1), true);
+    // Heckbert's step, then its nice neighbours (…, 0.1, 0.2, 0.5, 1, 2, …): the
+    // one whose ticks inside the range come nearest `count` wins (the larger on
+    // a tie). Heckbert's loose labelling widens the axis to the ticks; a legend
+    // cannot, so a step that leaves two ticks inside is often too coarse.
+    const double heckbert = niceNumber(niceNumber(hi - lo, false) / (count - 1), true);
+    auto inside = [&](double s) {
+        const double e = s * 1e-9;
+        return (long long)std::floor((hi + e) / s) - (long long)std::ceil((lo - e) / s) + 1;
+    };
+    double step = heckbert;
+    long long bestMiss = std::llabs(inside(heckbert) - count);
+    const int e = decade(heckbert);
+    for (int k = e - 1; k <= e + 1; ++k)
+        for (const double m : {1.0, 2.0, 5.0}) {
+            const double candidate = m * std::pow(10.0, k);
+            const long long miss = std::llabs(inside(candidate) - count);
+            if (miss < bestMiss || (miss == bestMiss && candidate > step)) {
+                bestMiss = miss;
+                step = candidate;
+            }
+        }
     const double eps = step * 1e-9;
     const long long first = (long long)std::ceil((lo - eps) / step);
     const long long last = (long long)std::floor((hi + eps) / step);

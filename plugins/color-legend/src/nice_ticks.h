@@ -19,7 +19,9 @@ double niceNumber(double x, bool round);
 
 // About `count` ticks at multiples of a nice step, every one inside the range
 // [min(minimum, maximum), max(...)] (ends included within a 1e-9 step
-// tolerance), in increasing value. A range of zero width gets one tick at the
+// tolerance), in increasing value. The step is Heckbert's or the nice number
+// near it (1, 2, 5 × 10^k within a decade) whose ticks inside the range come
+// nearest `count`, the larger step on a tie. A range of zero width gets one tick at the
 // value. Labels show as many decimals as the step needs ("0.2", "−2", "1500",
 // with a typeset minus sign U+2212);
 // when a tick reaches 10^5 or the step is below 10^-3, every label is in

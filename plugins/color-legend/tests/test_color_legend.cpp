@@ -71,6 +71,8 @@ TEST(NiceTicks, LinearTicksAreRoundNumbersInsideTheRange) {
     EXPECT_THAT(labels(linearTicks(0, 2e5, 5)),
                 ElementsAre("0", "5×10⁴", "1.0×10⁵", "1.5×10⁵", "2.0×10⁵"));
     EXPECT_THAT(labels(linearTicks(0.0001, 0.0009, 5)), ElementsAre("2×10⁻⁴", "4×10⁻⁴", "6×10⁻⁴", "8×10⁻⁴"));
+    // Heckbert's step (0.5) would leave two ticks inside; the nearer count wins.
+    EXPECT_THAT(labels(linearTicks(-0.46, 0.55, 5)), ElementsAre("−0.4", "−0.2", "0.0", "0.2", "0.4"));
     // Positions along the bar; a reversed range counts from its minimum.
     const auto r = linearTicks(6, -2, 5);
     EXPECT_EQ(r.front().value, -2);

@@ -34,14 +34,21 @@ void Lighting::execute(Context& ctx) {
 
     // Normals in SDK view space, facing the camera (two-sided lighting).
     const Normals which = ctx.get(normals_);
-    const float* world[3] = {in->hostFloat("N.x"), in->hostFloat("N.y"), in->hostFloat("N.z")};
+    const BufferPtr geometry = ctx.get(geometry_);
+    if (geometry && (geometry->width() != w || geometry->height() != h))
+        throw Error("input 'geometry' is " + std::to_string(geometry->width()) + " x " +
+                    std::to_string(geometry->height()) + " but 'image' is " + std::to_string(w) + " x " +
+                    std::to_string(h));
+    const Buffer& source = geometry ? *geometry : *in;
+    const float* world[3] = {source.hostFloat("N.x"), source.hostFloat("N.y"), source.hostFloat("N.z")};
     const bool haveCaptured = world[0] && world[1] && world[2];
     if (which == Normals::Captured && !haveCaptured)
-        throw Error("normals: captured needs N.x, N.y and N.z in the input; it has " + [&] {
-            std::string s;
-            for (const auto& c : in->channels()) s += (s.empty() ? "" : ", ") + c.name;
-            return s;
-        }());
+        throw Error(std::string("normals: captured needs N.x, N.y and N.z in input '") +
+                    (geometry ? "geometry" : "image") + "'; it has " + [&] {
+                        std::string s;
+                        for (const auto& c : source.channels()) s += (s.empty() ? "" : ", ") + c.name;
+                        return s;
+                    }());
     std::vector<float> nv[3] = {std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
     float* view[3] = {nv[0].data(), nv[1].data(), nv[2].data()};
     if (haveCaptured && which != Normals::Reconstructed) {
@@ -72,7 +79,7 @@ void Lighting::execute(Context& ctx) {
         if (ao->width() != w || ao->height() != h)
             throw Error("input 'ao' is " + std::to_string(ao->width()) + " x " + std::to_string(ao->height()) +
                         " but 'image' is " + std::to_string(w) + " x " + std::to_string(h));
-        aoPlane = ao->requireFloat(ctx.get(aoChannel_));
+        aoPlane = ao->requireFloat("AO");
     }
     const float ambient = float(ctx.get(ambient_)), diffuse = float(ctx.get(diffuse_));
     const float specular = float(ctx.get(specular_)), shininess = float(ctx.get(shininess_));

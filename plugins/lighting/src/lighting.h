@@ -13,7 +13,7 @@ public:
     enum class Space { View, World };
 
     PortList ports() const override {
-        return {image_,     ao_,         aoChannel_,  normals_,    mode_,       space_,      lightCount_,
+        return {image_,     geometry_,   ao_,         normals_,    mode_,       space_,      lightCount_,
                 direction1_, intensity1_, direction2_, intensity2_, direction3_, intensity3_, direction4_,
                 intensity4_, ambient_,    diffuse_,    specular_,   shininess_,  specularColor_, result_};
     }
@@ -24,15 +24,21 @@ private:
                    "Surface colour R, G, B (the albedo), depth Z and the camera; world-space normals N.x, N.y, N.z "
                    "when captured",
                    {"Z", "R", "G", "B"}};
-    OptionalImageIn ao_{"ao", "Optional ambient occlusion (e.g. SSAO's output): multiplies the ambient term only",
+    OptionalImageIn geometry_{"geometry",
+                              "Optional G-buffer with the captured normals N.x, N.y, N.z, same size (e.g. the "
+                              "CinemaReader's output: ColorMapping keeps only colour and Z)",
+                              {"N.x", "N.y", "N.z"}};
+    OptionalImageIn ao_{"ao",
+                        "Optional ambient occlusion in channel AO (1 = open; SSAO's output, or rename with "
+                        "ChannelSelect), same size: multiplies the ambient term only",
                         {"AO"}};
-    StringIn aoChannel_{"aoChannel", "AO", "Channel of `ao` holding the occlusion (1 = open)"};
     EnumIn<Normals> normals_{"normals",
                              {{Normals::Auto, "auto"}, {Normals::Captured, "captured"},
                               {Normals::Reconstructed, "reconstructed"}},
                              Normals::Auto,
-                             "captured: N.x/N.y/N.z of the input (world space); reconstructed: from depth (the "
-                             "Normals pass's extrapolated method); auto: captured when present"};
+                             "captured: N.x/N.y/N.z (world space) of `geometry` when connected, else of `image`; "
+                             "reconstructed: from depth (the Normals pass's extrapolated method); auto: captured "
+                             "when present"};
     EnumIn<Mode> mode_{"mode",
                        {{Mode::Headlight, "headlight"}, {Mode::Directional, "directional"}},
                        Mode::Headlight,

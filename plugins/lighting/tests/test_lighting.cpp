@@ -121,11 +121,10 @@ TEST(Lighting, AoMultipliesOnlyTheAmbientPart) {
     const Camera cam = viewCamera(20, 16, true);
     const ScenePlane plane{{0, 0, 0}, normalize(Vec3{0.1, 0.2, 1.0})};
     const BufferPtr img = planeImage(cam, plane, true);
-    const auto ao = makeImage(20, 16, {"Occlusion"}, [](int x, int, int) { return x < 10 ? 0.5f : 1.0f; });
+    const auto ao = makeImage(20, 16, {"AO"}, [](int x, int, int) { return x < 10 ? 0.5f : 1.0f; });
     Inputs in = lambertOnly(plane.normal, "captured");
     in["ambient"] = {Value(0.3)};
     in["ao"] = {Value(BufferPtr(ao))};
-    in["aoChannel"] = {Value("Occlusion")};
     const BufferPtr out = runPass("Lighting", img, in);
     forInterior(*out, [&](std::size_t i) {
         const double occlusion = (i % 20) < 10 ? 0.5 : 1.0;
@@ -172,4 +171,18 @@ TEST(Lighting, ErrorsAreClear) {
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("direction1 is not a direction"));
     }
+}
+
+TEST(Lighting, CapturedNormalsFromTheGeometryInput) {
+    // Colour without normals (as ColorMapping writes it) lit with the normals of
+    // the G-buffer it came from.
+    const ScenePlane plane{{0, 0, 0}, normalize(Vec3{0.5, 0.2, 1.0})};
+    const Camera cam = viewCamera(24, 18, true);
+    const BufferPtr gbuffer = planeImage(cam, plane, true);
+    const BufferPtr colour = planeImage(cam, plane, false);
+    Inputs in = lambertOnly(Vec3{0, 0, 1}, "captured");
+    in["geometry"] = {Value(gbuffer)};
+    const BufferPtr out = runPass("Lighting", colour, in);
+    for (std::size_t i = 0; i < out->pixelCount(); ++i)
+        ASSERT_NEAR(out->hostFloat("R")[i], 0.8 * 0.9 * plane.normal.z, 1e-5) << i;  // every pixel: no border effect
 }
