@@ -60,19 +60,9 @@ void Annotation::execute(Context& ctx) {
     x = std::round(x + ctx.get(offsetX_) * h);
     y = std::round(y + ctx.get(offsetY_) * h);
 
-    const bool alpha = in->hasChannel("A");
-    std::vector<ChannelDesc> fresh{"R", "G", "B"};
-    if (alpha) fresh.push_back("A");
-    auto out = ctx.derive(in, fresh, Fill::None);
-    text::RgbaPlanes planes;
-    planes.width = w;
-    planes.height = h;
-    float** dst[4] = {&planes.r, &planes.g, &planes.b, &planes.a};
-    for (std::size_t c = 0; c < fresh.size(); ++c) {
-        const float* src = in->requireFloat(fresh[c].name);
-        *dst[c] = out->writeFloat(fresh[c].name);
-        std::copy(src, src + in->pixelCount(), *dst[c]);
-    }
+    const text::Overlay overlay = text::beginOverlay(ctx, in);
+    const text::RgbaPlanes& planes = overlay.planes;
+    const std::shared_ptr<WritableBuffer>& out = overlay.buffer;
     const int mw = std::max(1, int(boxW)), mh = std::max(1, int(boxH));
     if (ctx.get(box_)) {
         text::Mask background(mw, mh);

@@ -48,15 +48,17 @@ void ColorLegend::execute(Context& ctx) {
     const double minimum = ctx.get(minimum_), maximum = ctx.get(maximum_);
     const bool logScale = ctx.get(scale_) == Scale::Log;
 
-    std::vector<legend::Tick> ticks;
-    if (!std::isfinite(minimum) || !std::isfinite(maximum)) {
+    const bool finiteRange = std::isfinite(minimum) && std::isfinite(maximum);
+    if (!finiteRange)
         ctx.warn("the range is not finite (" + fmt::format("{} to {}", minimum, maximum) +
                  "; the ColorMapping found no data?): the bar is drawn without tick labels");
-    } else {
-        const int count = int(ctx.get(ticks_));
-        ticks = logScale ? legend::logTicks(minimum, maximum, count) : legend::linearTicks(minimum, maximum, count);
-        if (!ctx.get(labelFormat_).empty()) relabel(ticks, ctx.get(labelFormat_));
-    }
+    auto ticksFor = [&](int count) {
+        std::vector<legend::Tick> t;
+        if (!finiteRange) return t;
+        t = logScale ? legend::logTicks(minimum, maximum, count) : legend::linearTicks(minimum, maximum, count);
+        if (!ctx.get(labelFormat_).empty()) relabel(t, ctx.get(labelFormat_));
+        return t;
+    };
 
     legend::LegendStyle style;
     style.orientation = ctx.get(orientation_);
@@ -72,24 +74,26 @@ void ColorLegend::execute(Context& ctx) {
     style.title = ctx.get(title_);
     const std::string& units = ctx.get(units_);
     if (!units.empty()) style.title += (style.title.empty() ? "(" : " (") + units + ")";
-    const legend::LegendLayout L = legend::layoutLegend(ticks, style, w, h);
+    // Fewer, evenly spaced labels rather than a gap where one would collide:
+    // ask for fewer ticks until every label fits.
+    std::vector<legend::Tick> ticks = ticksFor(int(ctx.get(ticks_)));
+    legend::LegendLayout L = legend::layoutLegend(ticks, style, w, h);
+    auto collides = [](const legend::LegendLayout& l) {
+        return std::any_of(l.ticks.begin(), l.ticks.end(), [](const legend::PlacedTick& t) { return t.label.w <= 0; });
+    };
+    for (int count = int(ctx.get(ticks_)) - 1; count >= 2 && collides(L); --count) {
+        std::vector<legend::Tick> fewer = ticksFor(count);
+        if (fewer.size() >= ticks.size()) continue;
+        ticks = std::move(fewer);
+        L = legend::layoutLegend(ticks, style, w, h);
+    }
 
     const ColorMapData map = loadColorMap(ctx.get(colormap_));
     const std::vector<Color> table = map.table(kTableSize);
 
-    const bool alpha = in->hasChannel("A");
-    std::vector<ChannelDesc> fresh{"R", "G", "B"};
-    if (alpha) fresh.push_back("A");
-    auto out = ctx.derive(in, fresh, Fill::None);
-    text::RgbaPlanes planes;
-    planes.width = w;
-    planes.height = h;
-    float** dst[4] = {&planes.r, &planes.g, &planes.b, &planes.a};
-    for (std::size_t c = 0; c < fresh.size(); ++c) {
-        const float* src = in->requireFloat(fresh[c].name);
-        *dst[c] = out->writeFloat(fresh[c].name);
-        std::copy(src, src + in->pixelCount(), *dst[c]);
-    }
+    const text::Overlay overlay = text::beginOverlay(ctx, in);
+    const text::RgbaPlanes& planes = overlay.planes;
+    const std::shared_ptr<WritableBuffer>& out = overlay.buffer;
 
     // Everything but the bar is one colour over a coverage mask; the box its own.
     const int mx = int(L.box.x), my = int(L.box.y);

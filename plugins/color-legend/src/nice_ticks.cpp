@@ -132,7 +132,9 @@ std::vector<Tick> logTicks(double minimum, double maximum, int count) {
     count = std::max(2, count);
     std::vector<Tick> ticks;
     const int d0 = int(std::ceil(std::log10(lo) - 1e-9)), d1 = int(std::floor(std::log10(hi) + 1e-9));
-    if (d1 - d0 + 1 >= 2) {
+    // Decades when there are enough of them to read the scale by; fewer than
+    // three leave too few labels, so 1-2-5 steps instead.
+    if (d1 - d0 + 1 >= 3) {
         const int every = std::max(1, int(std::ceil(double(d1 - d0 + 1) / double(count))));
         for (int e = d0; e <= d1; ++e)
             if ((e - d0) % every == 0) ticks.push_back(at(std::pow(10.0, e), label(std::pow(10.0, e))));

@@ -29,9 +29,9 @@ double niceNumber(double x, bool round);
 std::vector<Tick> linearTicks(double minimum, double maximum, int count);
 
 // Log scale (minimum, maximum > 0, else darkroom::Error): ticks at powers of
-// ten inside the range, every k-th decade when there are many; when the range
-// spans fewer than two decades, at 1, 2, 5 times powers of ten; failing that,
-// at linear nice numbers. `t` is the position in log10.
+// ten inside the range, every k-th decade when there are many; when fewer than
+// three powers of ten lie inside, at 1, 2, 5 times powers of ten; failing
+// that, at linear nice numbers. `t` is the position in log10.
 std::vector<Tick> logTicks(double minimum, double maximum, int count);
 
 // A label for `value` when ticks are `step` apart: fixed notation with the

@@ -98,8 +98,9 @@ TEST(NiceTicks, LogTicksAtDecades) {
     EXPECT_THAT(labels(d), ElementsAre("0.01", "0.1", "1", "10", "100"));
     for (std::size_t i = 0; i < d.size(); ++i) EXPECT_NEAR(d[i].t, 0.25 * double(i), 1e-12);
     EXPECT_THAT(labels(logTicks(1, 1e8, 5)), ElementsAre("1", "100", "10000", "10⁶", "10⁸"));
-    // Less than two decades: 1, 2, 5 steps.
+    // Fewer than three powers of ten inside: 1, 2, 5 steps.
     EXPECT_THAT(values(logTicks(2, 40, 5)), ElementsAre(2, 5, 10, 20));
+    EXPECT_THAT(labels(logTicks(0.03, 1.07, 5)), ElementsAre("0.05", "0.1", "0.2", "0.5", "1"));
     EXPECT_NEAR(logTicks(2, 40, 5)[2].t, std::log10(5.0) / std::log10(20.0), 1e-12);
     try {
         logTicks(0, 10, 5);
@@ -245,4 +246,39 @@ TEST(ColorLegend, ErrorsAreClear) {
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("labelFormat '.2q'"));
     }
+}
+
+TEST(ColorLegend, CrowdedLabelsGiveFewerEvenlySpacedTicks) {
+    // A short bar with large labels: 5 requested ticks of [-0.5, 0.55] cannot
+    // all be labelled; the legend asks for fewer instead of leaving gaps.
+    const int w = 768, h = 768;
+    const auto r = drawLegend(blackImage(w, h), {{"minimum", {Value(-0.5)}},
+                                                 {"maximum", {Value(0.55)}},
+                                                 {"length", {Value(0.3)}},
+                                                 {"fontSize", {Value(0.05)}},
+                                                 {"box", {Value(false)}},
+                                                 {"outline", {Value(false)}},
+                                                 {"textColor", {Value(Color{1, 0, 0, 1})}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    // Count the tick marks in the row below the bar: find the bar's lowest row first.
+    int barBottom = -1;
+    for (int y = h - 1; y >= 0 && barBottom < 0; --y)
+        for (int x = 0; x < w; ++x)
+            if (out->hostFloat("G")[std::size_t(y) * w + x] > 0.05f) {  // the map's pixels have green
+                barBottom = y;
+                break;
+            }
+    ASSERT_GT(barBottom, 0);
+    // Tick lines are several pixels wide at this size: one tick = one run of columns.
+    std::vector<double> centres;
+    for (int x = 0; x < w; ++x) {
+        if (out->hostFloat("R")[std::size_t(barBottom + 1) * w + x] != 1.0f) continue;
+        const int start = x;
+        while (x + 1 < w && out->hostFloat("R")[std::size_t(barBottom + 1) * w + x + 1] == 1.0f) ++x;
+        centres.push_back(0.5 * (start + x));
+    }
+    ASSERT_GE(centres.size(), 2u);
+    ASSERT_LT(centres.size(), 5u);
+    for (std::size_t i = 2; i < centres.size(); ++i)
+        EXPECT_NEAR(centres[i] - centres[i - 1], centres[1] - centres[0], 1) << "evenly spaced";
 }

@@ -1,5 +1,6 @@
 #include "text_drawing.h"
 
+#include <darkroom/context.h>
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
 
@@ -200,6 +201,22 @@ std::string resolvedFamily(const std::string& family) {
     pango_font_description_free(desc);
     g_object_unref(context);
     return out;
+}
+
+Overlay beginOverlay(Context& ctx, const BufferPtr& in) {
+    std::vector<ChannelDesc> fresh{"R", "G", "B"};
+    if (in->hasChannel("A")) fresh.push_back("A");
+    Overlay o;
+    o.buffer = ctx.derive(in, fresh, Fill::None);
+    o.planes.width = in->width();
+    o.planes.height = in->height();
+    float** dst[4] = {&o.planes.r, &o.planes.g, &o.planes.b, &o.planes.a};
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+        const float* src = in->requireFloat(fresh[c].name);
+        *dst[c] = o.buffer->writeFloat(fresh[c].name);
+        std::copy(src, src + in->pixelCount(), *dst[c]);
+    }
+    return o;
 }
 
 void paint(const Mask& mask, int ox, int oy, Color color, const RgbaPlanes& image) {

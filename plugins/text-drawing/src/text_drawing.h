@@ -8,10 +8,15 @@
 // Text is laid out at the image's own resolution (sizes are pixels), without
 // hinting, so a label drawn at twice the size is the same shape twice as
 // large: crisp at any resolution, and placed identically whatever the size.
+#include <darkroom/buffer.h>
 #include <darkroom/value.h>
 
 #include <memory>
 #include <string>
+
+namespace darkroom {
+class Context;
+}
 
 namespace darkroom::text {
 
@@ -76,6 +81,15 @@ struct RgbaPlanes {
     float* a = nullptr;
     int width = 0, height = 0;
 };
+
+// An overlay node's output: `in` with fresh copies of R, G, B (and A when
+// present) to paint on; every other channel shared. Throws darkroom::Error
+// naming the missing channel when `in` has no float R, G or B.
+struct Overlay {
+    std::shared_ptr<WritableBuffer> buffer;
+    RgbaPlanes planes;
+};
+Overlay beginOverlay(Context& ctx, const BufferPtr& in);
 
 // Paints linear `color` (its alpha scales the coverage) through `mask`, the
 // mask's top-left corner at image pixel (ox, oy); the part outside the image
