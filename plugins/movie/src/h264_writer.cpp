@@ -5,6 +5,7 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -73,6 +74,9 @@ H264Writer::H264Writer(const std::string& path, int width, int height, const H26
     if (width <= 0 || height <= 0 || width % 2 || height % 2)
         throw Error("movie " + path + ": frames of " + std::to_string(width) + " x " + std::to_string(height) +
                     " pixels; H.264 4:2:0 needs an even, positive width and height");
+    // x264 and the muxer report their statistics on stderr at the default
+    // level; a node speaks through its errors and warnings only.
+    av_log_set_level(AV_LOG_ERROR);
     const AVCodec* encoder = avcodec_find_encoder_by_name("libx264");
     if (!encoder) encoder = avcodec_find_encoder(AV_CODEC_ID_H264);
     if (!encoder)
