@@ -94,6 +94,31 @@ Hits castSpheres(Context& ctx, const Camera& cam, const std::vector<Sphere>& sph
         for (int band = b.y0 / kBand; band <= b.y1 / kBand; ++band) perBand[std::size_t(band)].push_back(int(i));
     }
 
+    // Camera::ray's arithmetic with the basis and the per-column and per-row
+    // image-plane offsets computed once (ray() re-derives the basis per call).
+    Vec3 right, up, fwd;
+    cam.basis(right, up, fwd);
+    const bool perspective = cam.projection == Camera::Projection::Perspective;
+    std::vector<double> sxs(std::size_t(std::max(w, 0))), sys(std::size_t(std::max(h, 0)));
+    for (int x = 0; x < w; ++x) {
+        double sy;
+        cam.planeOffsets(x + 0.5, 0.5, sxs[std::size_t(x)], sy);
+    }
+    for (int y = 0; y < h; ++y) {
+        double sx;
+        cam.planeOffsets(0.5, y + 0.5, sx, sys[std::size_t(y)]);
+    }
+    auto rayAt = [&](int x, int y, Vec3& o, Vec3& d) {
+        const double sx = sxs[std::size_t(x)], sy = sys[std::size_t(y)];
+        if (perspective) {
+            o = cam.position;
+            d = fwd + right * sx + up * sy;
+        } else {
+            o = cam.position + right * sx + up * sy;
+            d = fwd;
+        }
+    };
+
     ctx.parallelFor(0, bands, 1, [&](int band0, int band1) {
         for (int band = band0; band < band1; ++band) {
             const int yEnd = std::min(h, (band + 1) * kBand);
@@ -103,7 +128,7 @@ Hits castSpheres(Context& ctx, const Camera& cam, const std::vector<Sphere>& sph
                 for (int y = std::max(b.y0, band * kBand); y <= std::min(b.y1, yEnd - 1); ++y)
                     for (int x = b.x0; x <= b.x1; ++x) {
                         Vec3 o, d;
-                        cam.ray(x + 0.5, y + 0.5, o, d);
+                        rayAt(x, y, o, d);
                         const double t = intersect(o, d, s);
                         if (!(t > 0)) continue;
                         const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
