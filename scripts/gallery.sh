@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the example gallery: captures the demo scene (if out/demo is
-# missing), then runs every pipeline in docs/examples/*.yaml (and those on other inputs in docs/examples/ttk/ and volume/), writing its
-# pictures into docs/gallery/ (scaled to 512 pixels wide).
+# missing), then runs every pipeline in docs/examples/*.yaml (and those on other inputs in docs/examples/ttk/, volume/
+# and publish/), writing its pictures into docs/gallery/ (scaled to 512 pixels wide, but the teaser).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
@@ -18,6 +18,12 @@ if [ ! -d "$root/out/volume/tetrahedra.cdb" ]; then
   [ -f "$root/out/volume/blobs.vtu" ] || python3 "$root/docs/examples/volume/make_tetrahedra.py" "$root/out/volume/blobs.vtu"
   "$darkroom" capture "$root/docs/examples/volume/tetrahedra.yaml" --output "$root/out/volume/tetrahedra.cdb"
 fi
+# The publishing examples (docs/examples/publish): the teaser's scene, captured
+# at 2048 x 1024 with its maxima kept as a point list.
+if [ ! -d "$root/out/publish/teaser.cdb" ]; then
+  mkdir -p "$root/out/publish"
+  "$darkroom" capture "$root/docs/examples/publish/teaser-scene.yaml" --output "$root/out/publish/teaser.cdb"
+fi
 status=0
 # The pipelines on other inputs (the shared TTK database, the volume example) live in subfolders.
 for pipeline in "$root"/docs/examples/*.yaml "$root"/docs/examples/ttk/*.yaml "$root"/docs/examples/volume/volume-*.yaml; do
@@ -29,8 +35,36 @@ for pipeline in "$root"/docs/examples/*.yaml "$root"/docs/examples/ttk/*.yaml "$
     status=1
   fi
 done
-# Keep the committed pictures small.
+# Publishing: every pipeline but the scene file and the --foreach ones, which
+# write a database and a movie into out/publish; the orbit's theta = 40
+# frames, in azimuth order, become one contact sheet.
+for pipeline in "$root"/docs/examples/publish/*.yaml; do
+  name=$(basename "$pipeline" .yaml)
+  case "$name" in
+    teaser-scene) continue ;;
+    foreach-*) args=(--foreach read --output "$root/out/publish") ;;
+    *) args=(--output "$root/docs/gallery") ;;
+  esac
+  if "$darkroom" run "$pipeline" "${args[@]}"; then
+    echo "rendered $name"
+  else
+    echo "FAILED: $name" >&2
+    status=1
+  fi
+done
+if [ -d "$root/out/publish/orbit.cdb" ]; then
+  frames=()
+  for phi in 0 45 90 135 180 225 270 315; do frames+=("$root/out/publish/orbit.cdb/phi=${phi}_theta=40.png"); done
+  oiiotool "${frames[@]}" --mosaic 4x2 -o "$root/docs/gallery/publish-orbit.png"
+fi
+# Keep the committed pictures small: 512 pixels wide, the orbit's contact
+# sheet 1024; the teaser stays at the 2048 x 1024 it is rendered at.
 for png in "$root"/docs/gallery/*.png; do
-  oiiotool "$png" --resize 512x0 -o "$png"
+  case "$(basename "$png")" in
+    publish-teaser.png) continue ;;
+    publish-orbit.png) width=1024 ;;
+    *) width=512 ;;
+  esac
+  oiiotool "$png" --resize ${width}x0 -o "$png"
 done
 exit $status

@@ -12,6 +12,9 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
+  # text of ColorLegend and Annotation (pango, cairo; font: fonts-dejavu-core
+  # below), and the Movie node's H.264 encoding (FFmpeg's libraries, libx264)
+  libpango1.0-dev libcairo2-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
   # the editor (Qt Widgets, OpenGL and OpenGLWidgets, QTest), the X platform
   # plugin and Mesa's software OpenGL (llvmpipe), fonts for its labels, and a
   # virtual X server for the GUI tests

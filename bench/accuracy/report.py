@@ -40,6 +40,8 @@ DEFAULT_SETTINGS = {
     ("ao", "horizon"): "slices=4 steps=8",
     ("ao", "hemisphere"): "samples=16",
     ("ao", "ray traced (cosine)"): "samples=16",
+    ("ao", "EDL"): "radius=1 scales=2",
+    ("ao", "EDL (strength 0.1)"): "radius=1 scales=2",
     ("fxaa", "FXAA"): "preset 12",
     ("fxaa", "SSAA"): "2x2",
     ("dof", "SSDoF disc"): "samples 64",
@@ -61,9 +63,9 @@ def _value(rows, region, metric):
 # small. `judge(own, base, floor)` gets the rows of one scene.
 FAILURE_RULES = {
     "ao": {
-        "methods": ["horizon", "hemisphere", "horizon points", "hemisphere points"],
+        "methods": ["horizon", "hemisphere", "horizon points", "hemisphere points", "EDL", "EDL (strength 0.1)"],
         "rule": "RMSE over geometry pixels > 0.05",
-        "panels": "SSAO | reference | 4 × |error| (white = 0.25 or more)",
+        "panels": "SSAO or EDL | reference | 4 × |error| (white = 0.25 or more)",
         "judge": lambda own, base, floor: _value(own, "all", "rmse") > 0.05,
         "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.3f}",
     },

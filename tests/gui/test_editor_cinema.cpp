@@ -11,6 +11,9 @@
 #include "test_support.h"
 
 #include <darkroom/framework/cinema/database.h>
+#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/framework/evaluator.h>
+#include <darkroom/framework/graph.h>
 #include <darkroom/framework/formats/npy.h>
 #include <darkroom/framework/formats/vti.h>
 #include <darkroom/framework/image_io.h>
@@ -31,6 +34,7 @@ private slots:
     void npzAndVtiEntriesGetThumbnails();
     void composableImageSetEntriesAreLayers();
     void anUnreadableEntrySaysWhy();
+    void aDatabaseWrittenByCinemaWriterOpens();
 
 private:
     bool thumbnailsArrived(int count);
@@ -139,6 +143,54 @@ void CinemaTest::anUnreadableEntrySaysWhy() {
     QVERIFY(QTest::qWaitFor([&] { return w_->cinema()->thumbnails()->item(0)->data(Qt::UserRole).toBool(); }, 30000));
     QVERIFY2(w_->cinema()->thumbnails()->item(1)->toolTip().contains("bad.npz"),
              qPrintable(w_->cinema()->thumbnails()->item(1)->toolTip()));
+}
+
+void CinemaTest::aDatabaseWrittenByCinemaWriterOpens() {
+    // A source database shaded into a PNG database by CinemaWriter, one
+    // evaluation per row as `darkroom run --foreach` does, with a point list
+    // beside each source entry: the browser lists the written entries with
+    // the source's columns and a thumbnail each.
+    const std::string source = dir_->file("source.cdb"), shaded = dir_->file("shaded.cdb");
+    {
+        CinemaWriterOptions o;
+        o.attachments = {{"FILE_points", ".points.csv"}};
+        CinemaWriter w(source, {"time", "phi"}, o);
+        for (double t : {0.0, 1.0})
+            for (double phi : {0.0, 90.0}) {
+                auto img = test::makeImage(24, 16, {"Z", "R", "G", "B"}, [=](int x, int, int c) {
+                    return c == 0 ? 2.0f : float(x) / 24.0f * float(t + 1) * 0.5f;
+                });
+                w.addEntry({{"time", CinemaValue(t)}, {"phi", CinemaValue(phi)}}, *img, {{"FILE_points", "x,y,z\n0,0,0\n"}});
+            }
+        w.finish();
+    }
+    {
+        Graph g(guitest::registry());
+        g.addNode("read", "CinemaReader");
+        g.setParameter("read", "database", Value(source));
+        g.addNode("write", "CinemaWriter");
+        g.setParameter("write", "database", Value(shaded));
+        g.connect({"read", "image"}, {"write", "image"});
+        g.connect({"read", "row"}, {"write", "row"});
+        Evaluator ev;
+        const auto db = CinemaDatabase::open(source);
+        for (std::size_t r = 0; r < db.rowCount(); ++r) {
+            g.setParameter("read", "parameters", Value(db.formatParameters(r)));
+            ev.run(g);
+        }
+    }
+    QVERIFY(w_->openCinema(QString::fromStdString(shaded)));
+    const auto& entries = w_->cinema()->entries();
+    QCOMPARE(entries.size(), std::size_t(4));
+    QCOMPARE(entries[3].parameters, QString("time=1, phi=90"));
+    QVERIFY(thumbnailsArrived(4));
+    QCOMPARE(w_->cinema()->thumbnailFailures(), 0);
+    QVERIFY(w_->cinema()->control("time"));
+    w_->cinema()->thumbnails()->setCurrentRow(2);
+    QVERIFY(guitest::waitIdle(*w_));
+    QVERIFY(w_->renderView()->image());
+    QCOMPARE(w_->renderView()->image()->width(), 24);
+    QVERIFY(guitest::screenshot(w_.get(), "cinema-written"));
 }
 
 QTEST_MAIN(CinemaTest)

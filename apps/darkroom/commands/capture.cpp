@@ -6,14 +6,29 @@
 #include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/cinema/writer.h>
 #include <darkroom/framework/run_filter.h>
+#include <darkroom/framework/scene/point_list.h>
 #include <darkroom/framework/scene/scene_file.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <cctype>
 #include <chrono>
+#include <map>
 
 namespace darkroom::cli {
+
+namespace {
+
+// A point list's object name as a column and file-name part: letters, digits,
+// '-' kept, everything else '_' ("maxima", "cloud_points").
+std::string pointListColumnName(const std::string& object) {
+    std::string s;
+    for (char c : object) s += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+    return s.empty() ? std::string("points") : s;
+}
+
+}  // namespace
 
 void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
     auto* cmd = app.add_subcommand("capture", "Ray trace a scene file's cameras into a Cinema database of G-buffers");
@@ -57,6 +72,17 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             wo.resume = a->resume;
             wo.image.compression = a->compression;
             wo.image.halfFloat = a->half;
+            // Objects kept as point lists: one CSV per entry in FILE_<name>.
+            std::map<std::string, std::string> pointLists;
+            for (const SceneObject& o : scene.pointLists) {
+                const std::string name = pointListColumnName(o.name);
+                wo.attachments.push_back({"FILE_" + name, "." + name + ".csv"});
+                if (!pointLists.emplace(wo.attachments.back().column, pointListCsv(o)).second) {
+                    reportError(a->scene + ": point lists '" + o.name + "' and another both become column FILE_" +
+                                name + "; rename one");
+                    return int(kBadInput);
+                }
+            }
             std::unique_ptr<CinemaWriter> writer;
             try {
                 writer = std::make_unique<CinemaWriter>(a->output, columns, wo);
@@ -86,7 +112,7 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                     continue;
                 }
                 const BufferPtr image = backend->render(cam.camera, scene.request, *ctx);
-                writer->addEntry(params, *image);
+                writer->addEntry(params, *image, pointLists);
                 ++rendered;
             }
             writer->finish();

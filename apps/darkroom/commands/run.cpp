@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <set>
 
 namespace darkroom::cli {
 
@@ -54,11 +55,27 @@ std::string perEntryPath(const std::string& path, const std::string& entry) {
     return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
 }
 
-// The Path parameters of every output node, to rename per entry.
-std::vector<std::pair<std::string, std::string>> outputPathPorts(const Graph& g) {
+// Every node that depends on `source` through edges (source included).
+std::set<std::string> downstreamOf(const Graph& g, const std::string& source) {
+    std::set<std::string> seen{source};
+    std::vector<std::string> todo{source};
+    while (!todo.empty()) {
+        const std::string n = todo.back();
+        todo.pop_back();
+        for (const Edge& e : g.edges())
+            if (e.from.node == n && seen.insert(e.to.node).second) todo.push_back(e.to.node);
+    }
+    return seen;
+}
+
+// The Path parameters of the output nodes that run per entry, to rename per
+// entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
+// has) names its entries itself: its paths stay as given.
+std::vector<std::pair<std::string, std::string>> outputPathPorts(const Graph& g, const std::vector<std::string>& sinks) {
     std::vector<std::pair<std::string, std::string>> out;
-    for (const auto& name : g.sinks()) {
+    for (const auto& name : sinks) {
         const Node* n = g.node(name);
+        if (g.ports(*n).input("row") && !g.edgesInto(name, "row").empty()) continue;
         for (const auto& p : g.ports(*n).inputs)
             if (p.type == PortType::Path) out.emplace_back(name, p.name);
     }
@@ -92,7 +109,9 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         ->type_name("DIR");
     auto* fe = cmd->add_option("--foreach", a->foreach,
                                "Run once per entry of the Cinema database read by NODE (a CinemaReader); "
-                               "output paths get the entry's parameters, or replace {entry}")
+                               "output paths get the entry's parameters, or replace {entry} (sinks fed the "
+                               "reader's row, e.g. CinemaWriter, name entries themselves); sinks that do not "
+                               "depend on NODE run once, after the last entry")
                    ->type_name("NODE");
     cmd->add_option("--where", a->where, "With --foreach: only entries matching, e.g. \"theta=0, phi=30\" or SQL \"phi > 0 AND theta = 0\"")
         ->needs(fe)
@@ -138,9 +157,9 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                 report({w});
             };
             Evaluator ev(o);
-            auto evaluate = [&](const std::string& title) {
+            auto evaluate = [&](const std::string& title, std::vector<std::string> sinks = {}) {
                 const auto t0 = std::chrono::steady_clock::now();
-                ev.run(g);
+                ev.run(g, std::move(sinks));
                 if (a->profile) {
                     bar.finish();
                     printProfile(title, ev.lastProfile(),
@@ -169,7 +188,14 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                         reportError(dbPath.string() + ": no entry matches '" + a->where + "'");
                         return int(kBadInput);
                     }
-                    const auto outputs = outputPathPorts(g);
+                    // Sinks that depend on the entry run once per entry; the others
+                    // (e.g. a Movie of the database the entries are written to) once,
+                    // after the last entry.
+                    const std::set<std::string> perEntry = downstreamOf(g, a->foreach);
+                    std::vector<std::string> entrySinks, finalSinks;
+                    for (const auto& sink : g.sinks()) (perEntry.count(sink) ? entrySinks : finalSinks).push_back(sink);
+                    if (entrySinks.empty()) std::swap(entrySinks, finalSinks);  // nothing reads the entry: as before
+                    const auto outputs = outputPathPorts(g, entrySinks);
                     std::vector<std::string> originals;
                     for (const auto& [n, p] : outputs) originals.push_back(currentValue(g, n, p));
                     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -185,7 +211,13 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                         };
                         ev.setOptions(o);
                         evaluate("entry " + entry + " (" + std::to_string(i + 1) + " of " +
-                                 std::to_string(rows.size()) + ")");
+                                 std::to_string(rows.size()) + ")",
+                                 entrySinks);
+                    }
+                    if (!finalSinks.empty()) {
+                        o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
+                        ev.setOptions(o);
+                        evaluate("after the last entry", finalSinks);
                     }
                 }
             } catch (const GraphError& e) {

@@ -34,10 +34,12 @@ struct Header {
 };
 
 // Size and channel names without the pixels; nullopt for formats whose header
-// we do not read here (.vti: read whole by the reader, which checks it).
+// we do not read here (.vti: read whole by the reader, which checks it) and for
+// products that are not images.
 std::optional<Header> readHeader(const std::string& path) {
     const std::string ext = extensionOf(path);
-    if (ext == ".vti") return std::nullopt;
+    // .csv: a point list (scene/point_list.h), no pixels to compare.
+    if (ext == ".vti" || ext == ".csv") return std::nullopt;
     Header h;
     if (ext == ".npz") {
         // Outside a composable image set an .npz is a numpy image: (rows, columns).

@@ -6,6 +6,7 @@
 #include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/cinema/product.h>
 #include <darkroom/framework/formats/npy.h>
+#include <darkroom/framework/scene/point_list.h>
 
 #include <filesystem>
 
@@ -65,6 +66,13 @@ CinemaDescription CinemaDatabase::describe() const {
             try {
                 if (hasExtension(p.path, ".npz")) {
                     describeNpz(p, isComposableImageSet(*this));
+                } else if (hasExtension(p.path, ".csv")) {
+                    const PointList points = readPointList(p.path);
+                    std::string columns = "x, y, z";
+                    if (!points.radii.empty()) columns += ", radius";
+                    for (const auto& f : points.fields) columns += ", " + f.name;
+                    p.pointList = true;
+                    p.details.push_back(fmt::format("point list: {} points, columns {}", points.size(), columns));
                 } else {
                     Diagnostics notes;
                     const auto image = readCinemaProduct(p.path, &notes);
@@ -129,6 +137,10 @@ std::string formatDescription(const CinemaDescription& d) {
         out += fmt::format("products of {}:\n", p.column);
         if (!p.error.empty()) {
             out += fmt::format("  could not read {}: {}\n", p.path.empty() ? "a product" : p.path, p.error);
+            continue;
+        }
+        if (p.pointList) {
+            for (const auto& line : p.details) out += fmt::format("  {}\n", line);
             continue;
         }
         out += fmt::format("  size     {} x {}\n", p.width, p.height);

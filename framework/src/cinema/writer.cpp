@@ -25,8 +25,6 @@ using cinema_detail::DatabaseLock;
 
 namespace {
 
-constexpr const char* kProductExtension = ".exr";
-
 // Rows sort by their values, column by column: numbers (ascending, NaN last)
 // before text. Derived from the cell text alone, so an entry sorts the same
 // whether it was just added or read back by a resume.
@@ -108,10 +106,16 @@ struct CinemaWriter::Impl {
         return cells;
     }
 
-    std::string fileNameOf(const std::vector<std::string>& cells) const {
+    std::string stemOf(const std::vector<std::string>& cells) const {
         std::vector<std::pair<std::string, std::string>> pairs;
         for (std::size_t i = 0; i < columns.size(); ++i) pairs.emplace_back(columns[i], cells[i]);
-        return cinemaEntryName(pairs) + kProductExtension;
+        return cinemaEntryName(pairs);
+    }
+    std::string fileNameOf(const std::vector<std::string>& cells) const {
+        return stemOf(cells) + options.productExtension;
+    }
+    std::string attachmentNameOf(const std::string& product, const CinemaAttachmentColumn& a) const {
+        return product.substr(0, product.size() - options.productExtension.size()) + a.suffix;
     }
 
     std::string describe(const std::vector<std::string>& cells) const {
@@ -136,10 +140,14 @@ struct CinemaWriter::Impl {
         });
         std::string text;
         for (const auto& c : columns) text += quoteCsvCell(c) + ",";
-        text += "FILE\n";
+        text += "FILE";
+        for (const auto& a : options.attachments) text += "," + quoteCsvCell(a.column);
+        text += "\n";
         for (const auto* e : sorted) {
             for (const auto& cell : e->second.cells) text += quoteCsvCell(cell) + ",";
-            text += quoteCsvCell(e->first) + "\n";
+            text += quoteCsvCell(e->first);
+            for (const auto& a : options.attachments) text += "," + quoteCsvCell(attachmentNameOf(e->first, a));
+            text += "\n";
         }
         writeFileAtomic(csvPath, text);
     }
@@ -158,6 +166,21 @@ struct CinemaWriter::Impl {
                                         folder, c));
             if (!seen.insert(c).second)
                 throw Error(fmt::format("database {}: column '{}' is given twice", folder, c));
+        }
+        const std::string& ext = options.productExtension;
+        if (ext.size() < 2 || ext[0] != '.' || ext.find_first_of("/\\") != std::string::npos)
+            throw Error(fmt::format("database {}: product extension '{}' is not usable; expected e.g. .exr or .png",
+                                    folder, ext));
+        for (const auto& a : options.attachments) {
+            const bool bad = !isCinemaFileColumn(a.column) || a.column == "FILE" ||
+                             a.column.find_first_of(",\"\r\n") != std::string::npos || a.suffix.empty() ||
+                             a.suffix.find_first_of("/\\,\"\r\n") != std::string::npos || a.suffix == ext;
+            if (bad)
+                throw Error(fmt::format("database {}: attachment column '{}' with file suffix '{}' is not usable; "
+                                        "expected a column FILE_<name> and a suffix such as .<name>.csv",
+                                        folder, a.column, a.suffix));
+            if (!seen.insert(a.column).second)
+                throw Error(fmt::format("database {}: column '{}' is given twice", folder, a.column));
         }
     }
 
@@ -195,20 +218,30 @@ struct CinemaWriter::Impl {
         }
         std::vector<std::string> expected = columns;
         expected.push_back("FILE");
+        for (const auto& a : options.attachments) expected.push_back(a.column);
         if (table.header != expected)
             throw Error(fmt::format("cannot resume {}: its columns are {} but this capture writes {}; "
                                     "use --overwrite to replace it",
                                     folder, fmt::join(table.header, ","), fmt::join(expected, ",")));
+        const std::size_t extra = options.attachments.size();
         for (const auto& row : table.rows) {
-            std::vector<std::string> cells(row.begin(), row.end() - 1);
-            const std::string& file = row.back();
-            // Products are renamed into place complete, so one that exists
-            // under its final name is whole; a missing one is recomputed.
+            std::vector<std::string> cells(row.begin(), row.end() - 1 - std::ptrdiff_t(extra));
+            const std::string& file = row[columns.size()];
+            // Products and attachments are renamed into place complete, so
+            // one that exists under its final name is whole; an entry missing
+            // any of its files is recomputed.
             std::error_code ec;
             const fs::path product = fs::path(folder) / file;
             if (file != fileNameOf(cells) || !fs::is_regular_file(product, ec) ||
                 fs::file_size(product, ec) == 0)
                 continue;
+            bool complete = true;
+            for (std::size_t k = 0; k < extra; ++k) {
+                const std::string name = attachmentNameOf(file, options.attachments[k]);
+                complete = complete && row[columns.size() + 1 + k] == name &&
+                           fs::is_regular_file(fs::path(folder) / name, ec);
+            }
+            if (!complete) continue;
             Entry e{cells, {}};
             for (const auto& c : cells) e.key.push_back(sortCell(c));
             entries.emplace(file, std::move(e));
@@ -279,10 +312,20 @@ bool CinemaWriter::hasEntry(const CinemaParameters& parameters) const {
     return it != impl_->entries.end() && it->second.cells == cells;
 }
 
-void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& image) {
+void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& image,
+                            const std::map<std::string, std::string>& attachments) {
     Impl& d = *impl_;
     auto cells = d.cellsOf(parameters);
     const std::string file = d.fileNameOf(cells);
+    for (const auto& a : d.options.attachments)
+        if (!attachments.count(a.column))
+            throw Error(fmt::format("entry {} of database {}: the file for column {} is missing", d.describe(cells),
+                                    d.folder, a.column));
+    for (const auto& [column, bytes] : attachments)
+        if (std::none_of(d.options.attachments.begin(), d.options.attachments.end(),
+                         [&](const CinemaAttachmentColumn& a) { return a.column == column; }))
+            throw Error(fmt::format("entry {} of database {}: {} is not an attachment column of this database",
+                                    d.describe(cells), d.folder, column));
     {
         std::lock_guard<std::mutex> g(d.mutex);
         if (d.finished)
@@ -296,6 +339,8 @@ void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& im
     // The product first (atomically), the row naming it second: a kill in
     // between leaves a product no row names, which a resume rewrites.
     writeImage(image, (fs::path(d.folder) / file).string(), d.options.image);
+    for (const auto& a : d.options.attachments)
+        writeFileAtomic((fs::path(d.folder) / d.attachmentNameOf(file, a)).string(), attachments.at(a.column));
     std::lock_guard<std::mutex> g(d.mutex);
     Impl::Entry e{std::move(cells), {}};
     for (const auto& c : e.cells) e.key.push_back(sortCell(c));

@@ -36,8 +36,9 @@ public:
         const YAML::Node objects = root["objects"];
         if (!objects) fail(root, "missing 'objects' (a list of objects to draw)");
         if (!objects.IsSequence() || objects.size() == 0) fail(objects, "'objects' must be a non-empty list");
-        for (const auto& o : objects) loadObject(o, *d.scene, d.warnings);
+        for (const auto& o : objects) loadObject(o, *d.scene, d.warnings, d.pointLists);
         defaultRadii(*d.scene);
+        defaultPointListRadii(*d.scene, d.pointLists);
         if (root["backend"]) d.backend = text(root["backend"], "backend");
         d.request = channels(root["channels"], *d.scene, root);
         d.cameras = cameras(root["cameras"], *d.scene);
@@ -202,11 +203,19 @@ private:
         }
     }
 
-    void loadObject(const YAML::Node& o, Scene& scene, std::vector<std::string>& warnings) {
+    void loadObject(const YAML::Node& o, Scene& scene, std::vector<std::string>& warnings,
+                    std::vector<SceneObject>& pointLists) {
         if (!o.IsMap()) fail(o, "each object must be a map (with 'file' or 'generator')");
         checkKeys(o, {"name", "file", "generator", "parameters", "representation", "contourBy", "isosurfaces", "planes",
-                      "radius", "fields", "translate", "scale"},
+                      "radius", "fields", "translate", "scale", "store"},
                   "an object");
+        bool asPointList = false;
+        if (const YAML::Node st = o["store"]) {
+            const std::string s = text(st, "store");
+            if (s == "pointList") asPointList = true;
+            else if (s != "geometry") fail(st, "store must be geometry (ray traced, the default) or pointList (kept as "
+                                               "a CSV point list beside each entry), got '" + s + "'");
+        }
         std::string name;
         if (o["name"]) name = text(o["name"], "name");
         else if (o["file"]) name = std::filesystem::path(text(o["file"], "file")).stem().string();
@@ -255,8 +264,30 @@ private:
             else if (o["name"]) p.name = name;
             scenefile::transform(p, scale, translate);
             if (rep) p = scenefile::restyle(std::move(p), *rep);
+            if (asPointList && p.representation != Representation::Points)
+                p = scenefile::restyle(std::move(p), Representation::Points);
             if (radius) scenefile::setRadius(p, *radius);
-            scene.objects.push_back(std::move(p));
+            if (asPointList) {
+                for (const auto& other : pointLists)
+                    if (other.name == p.name)
+                        fail(o, "two point lists are named '" + p.name + "'; give one a 'name'");
+                pointLists.push_back(std::move(p));
+            } else {
+                scene.objects.push_back(std::move(p));
+            }
+        }
+    }
+
+    // Point lists get the radius rule of drawn points, on the drawn scene's bounds.
+    static void defaultPointListRadii(const Scene& scene, std::vector<SceneObject>& lists) {
+        Scene all;
+        all.objects = lists;
+        const double r = scene.objects.empty() ? all.bounds().radius() : scene.bounds().radius();
+        const float fallback = float(r > 0 ? 0.005 * r : 0.01);
+        for (auto& o : lists) {
+            bool zero = true;
+            for (std::size_t i = 3; zero && i < o.vertices.size(); i += 4) zero = o.vertices[i] == 0.f;
+            if (zero) scenefile::setRadius(o, fallback);
         }
     }
 

@@ -4,6 +4,7 @@
 #include <darkroom/framework/cinema/composable.h>
 #include <darkroom/framework/cinema/database.h>
 #include <darkroom/framework/cinema/product.h>
+#include <darkroom/framework/cinema/row.h>
 
 #include <filesystem>
 
@@ -50,10 +51,12 @@ void CinemaReader::execute(Context& ctx) {
     const std::string& file = ctx.get(file_);
     Diagnostics notes;
     std::shared_ptr<WritableBuffer> image;
+    std::size_t rowRead = 0;
     if (isComposableImageSet(*db) && file.empty()) {
         // Every channel row of the chosen layer is merged into one buffer.
         const auto rows = parameters.empty() ? std::vector<std::size_t>{0} : db->selectWhere(parameters);
         for (const std::size_t r : rows) ctx.readsFile(db->productPath(r, ""));
+        if (!rows.empty()) rowRead = rows.front();
         image = readComposableRows(*db, rows, &notes);
     } else {
         std::size_t row = 0;
@@ -70,6 +73,7 @@ void CinemaReader::execute(Context& ctx) {
             for (const auto& note : match.notes) ctx.warn(note);
             row = match.row;
         }
+        rowRead = row;
         const std::string product = db->productPath(row, file);
         ctx.readsFile(product);
         image = readCinemaProduct(product, &notes);
@@ -77,6 +81,7 @@ void CinemaReader::execute(Context& ctx) {
     for (const auto& n : notes) ctx.warn(n.where + ": " + n.message);
     ctx.progress(1.0);
     ctx.set(result_, image);
+    ctx.set(row_, Value(cinemaRowText(*db, rowRead)));
 }
 
 }  // namespace darkroom

@@ -15,7 +15,7 @@ class CinemaReader : public Filter {
 public:
     CinemaReader();
     ~CinemaReader() override;
-    PortList ports() const override { return {database_, parameters_, file_, strict_, result_}; }
+    PortList ports() const override { return {database_, parameters_, file_, strict_, result_, row_}; }
     void execute(Context& ctx) override;
 
 private:
@@ -31,6 +31,9 @@ private:
                      "The entry's product: every EXR channel; linear R, G, B(, A) for 8-bit images; .npz "
                      "members and .vti point arrays as channels; a composable image set's layer with "
                      "depth as Z and colormap.<channel> attributes"};
+    ValueOut row_{"row", PortType::String,
+                  "The entry read, as text: its parameter columns as written, then its FILE columns as absolute "
+                  "paths ('time=0.5, phi=30, FILE=/data/a.cdb/x.exr'); Annotation, CinemaWriter and Spheres take it"};
 
     // The parsed data.csv, kept while the file is unchanged so that moving a
     // parameter slider in the editor does not re-read it.

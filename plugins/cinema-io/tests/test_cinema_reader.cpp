@@ -145,3 +145,19 @@ TEST(CinemaReader, PeriodicPictureWithFileFirstAndSpacesAfterCommas) {
     const auto r = readEntry(db, "angle=7.2");
     EXPECT_TRUE(samePixels(*r.outputs.at("image").asImage(), *readImage(db + "/data/pic32.0002.png")));
 }
+
+TEST(CinemaReader, RowOutputHoldsTheEntryReadWithAbsoluteProductPaths) {
+    test::TempDir dir;
+    {
+        CinemaWriter w(dir.file("rows.cdb"), {"time", "phi"});
+        auto img = test::makeImage(3, 2, {"Z"}, [](int, int, int) { return 1.0f; });
+        w.addEntry({{"time", CinemaValue(0.5)}, {"phi", CinemaValue(30.0)}}, *img);
+        w.addEntry({{"time", CinemaValue(1.5)}, {"phi", CinemaValue(30.0)}}, *img);
+        w.finish();
+    }
+    // A partial query: the row output is the whole row that was read (the
+    // product path holds '=', so it is quoted).
+    const auto r = readEntry(dir.file("rows.cdb"), "time=1.5");
+    const std::string row = r.outputs.at("row").asString();
+    EXPECT_EQ(row, "time=1.5, phi=30, FILE=\"" + dir.file("rows.cdb/time=1.5_phi=30.exr") + "\"");
+}

@@ -42,6 +42,13 @@ double position(double v, double low, double high) {
     return std::clamp((v - low) / (high - low), 0.0, 1.0);
 }
 
+// The same on a log scale (low, high > 0): values <= 0 lie below any positive
+// range, so they take the start of the map (the end, for a reversed range).
+double logPosition(double v, double low, double high) {
+    if (!(v > 0)) return high < low ? 1.0 : 0.0;
+    return position(std::log10(v), std::log10(low), std::log10(high));
+}
+
 }  // namespace
 
 void ColorMapping::execute(Context& ctx) {
@@ -56,14 +63,18 @@ void ColorMapping::execute(Context& ctx) {
     const Color nan = ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_);
     const float alpha = float(ctx.get(opacity_));
 
+    const bool logScale = ctx.get(scale_) == Scale::Log;
     double low = std::numeric_limits<double>::quiet_NaN(), high = low;
     if (ctx.get(range_) == Range::Manual) {
         low = ctx.get(minimum_);
         high = ctx.get(maximum_);
         if (!std::isfinite(low) || !std::isfinite(high))
             throw Error("a manual range needs finite minimum and maximum");
+        if (logScale && !(low > 0 && high > 0))
+            throw Error("a log scale needs a positive manual range; got minimum " + std::to_string(low) +
+                        " and maximum " + std::to_string(high));
     } else {
-        const ScalarRange r = finiteRange(ctx, scalar, depth, w, h);
+        const ScalarRange r = finiteRange(ctx, scalar, depth, w, h, logScale);
         if (r.found) {
             low = r.low;
             high = r.high;
@@ -92,7 +103,7 @@ void ColorMapping::execute(Context& ctx) {
                 } else if (std::isnan(v) || !haveRange) {
                     c = nan;
                 } else {
-                    const double f = position(v, low, high) * (kTableSize - 1);
+                    const double f = (logScale ? logPosition(v, low, high) : position(v, low, high)) * (kTableSize - 1);
                     const int k = std::min(int(f), kTableSize - 2);
                     const float t = float(f - k), s = 1.0f - t;
                     // This form returns either entry exactly at t = 0 and t = 1.
@@ -110,6 +121,8 @@ void ColorMapping::execute(Context& ctx) {
     ctx.set(result_, out);
     ctx.set(usedMinimum_, low);
     ctx.set(usedMaximum_, high);
+    ctx.set(usedScale_, Value(logScale ? "log" : "linear"));
+    ctx.set(usedColormap_, Value(ctx.get(colormap_)));
 }
 
 }  // namespace darkroom

@@ -9,10 +9,12 @@ namespace darkroom {
 class ColorMapping final : public Filter {
 public:
     enum class Range { Automatic, Manual };
+    enum class Scale { Linear, Log };
 
     PortList ports() const override {
-        return {image_,    channel_, colormap_, range_,  minimum_,      maximum_,     nanColor_,
-                useMapNanColor_, opacity_, result_, usedMinimum_, usedMaximum_};
+        return {image_,   channel_, colormap_,    range_,       minimum_,      maximum_,   scale_,
+                nanColor_, useMapNanColor_, opacity_, result_, usedMinimum_, usedMaximum_, usedScale_,
+                usedColormap_};
     }
     void execute(Context& ctx) override;
 
@@ -33,6 +35,12 @@ private:
     FloatIn minimum_{"minimum", 0.0, -kBig, kBig, "Value mapped to the start of the map (manual range)"};
     FloatIn maximum_{"maximum", 1.0, -kBig, kBig,
                      "Value mapped to the end of the map (manual range); below minimum flips the map"};
+    EnumIn<Scale> scale_{"scale",
+                         {{Scale::Linear, "linear"}, {Scale::Log, "log"}},
+                         Scale::Linear,
+                         "linear: t = (v - min) / (max - min); log: t = (log10 v - log10 min) / (log10 max - log10 min) "
+                         "(ParaView's log scale): the automatic range then spans the positive values only, a manual "
+                         "range must be positive, and values <= 0 take the start of the map"};
     ColorIn nanColor_{"nanColor", Color{1.0f, 1.0f, 0.0f, 1.0f}, "Linear colour for NaN values"};
     BoolIn useMapNanColor_{"useMapNanColor", false,
                            "Use the colour map's own NaN colour when it defines one (ParaView JSON NanColor, "
@@ -44,6 +52,9 @@ private:
                      {"R", "G", "B", "A"}};
     ValueOut usedMinimum_{"usedMinimum", PortType::Float, "Value mapped to the start of the map (NaN if none)"};
     ValueOut usedMaximum_{"usedMaximum", PortType::Float, "Value mapped to the end of the map (NaN if none)"};
+    ValueOut usedScale_{"usedScale", PortType::Enum, "The scale used (linear or log), for a colour legend"};
+    ValueOut usedColormap_{"usedColormap", PortType::ColorMap,
+                           "The colour map used (preset name or resolved JSON path), for a colour legend"};
 };
 
 }  // namespace darkroom

@@ -6,7 +6,8 @@
 
 namespace darkroom {
 
-ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth, int width, int height) {
+ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth, int width, int height,
+                        bool positiveOnly) {
     ScalarRange total;
     std::mutex mutex;
     ctx.parallelFor(0, height, 16, [&](int y0, int y1) {
@@ -18,7 +19,7 @@ ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth
                 const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
                 if (depth && std::isinf(depth[i]) && depth[i] > 0) continue;
                 const double v = s[i];
-                if (!std::isfinite(v)) continue;
+                if (!std::isfinite(v) || (positiveOnly && !(v > 0))) continue;
                 r.found = true;
                 r.low = std::min(r.low, v);
                 r.high = std::max(r.high, v);

@@ -19,8 +19,10 @@ struct ScalarRange {
     bool found = false;  // false when no pixel had a finite value
 };
 
-// Over pixels whose value is finite and whose depth (when `depth` is given)
-// is not +inf. Row-parallel; the result does not depend on the split.
-ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth, int width, int height);
+// Over pixels whose value is finite (and positive, when `positiveOnly`: the
+// range of a log scale) and whose depth (when `depth` is given) is not +inf.
+// Row-parallel; the result does not depend on the split.
+ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth, int width, int height,
+                        bool positiveOnly = false);
 
 }  // namespace darkroom

@@ -167,3 +167,34 @@ TEST(ColorMapping, ResultDoesNotDependOnThreadCount) {
     const auto many = mapImage(big, {{"colormap", {Value("cool-to-warm")}}}, 8);
     EXPECT_TRUE(identical(*one.outputs.at("image").asImage(), *many.outputs.at("image").asImage()));
 }
+
+TEST(ColorMapping, LogScaleMapsDecadesEvenlyAndIgnoresNonPositiveValuesForItsRange) {
+    // 0.01, 0.1, 1, 10, 100 along x, then 0 and -5 (below any log range).
+    const float values[7] = {0.01f, 0.1f, 1.0f, 10.0f, 100.0f, 0.0f, -5.0f};
+    const auto img = test::makeImage(7, 1, {"Pressure"}, [&](int x, int, int) { return values[x]; });
+    const auto v = loadColorMap("viridis");
+    const auto r = mapImage(img, {{"scale", {Value("log")}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    EXPECT_FLOAT_EQ(float(r.outputs.at("usedMinimum").asFloat()), 0.01f);
+    EXPECT_FLOAT_EQ(float(r.outputs.at("usedMaximum").asFloat()), 100.0f);
+    EXPECT_EQ(r.outputs.at("usedScale").asString(), "log");
+    EXPECT_EQ(r.outputs.at("usedColormap").asString(), "viridis");
+    for (int k = 0; k < 5; ++k)
+        expectColor(pixel(*out, std::size_t(k)), v.sample(0.25 * k), 2e-4f, "decade " + std::to_string(k));
+    EXPECT_EQ(pixel(*out, 5), v.sample(0.0));
+    EXPECT_EQ(pixel(*out, 6), v.sample(0.0));
+
+    const auto linear = mapImage(img);
+    EXPECT_EQ(linear.outputs.at("usedScale").asString(), "linear");
+    EXPECT_EQ(linear.outputs.at("usedMinimum").asFloat(), -5.0);
+}
+
+TEST(ColorMapping, LogScaleNeedsAPositiveManualRange) {
+    try {
+        mapImage(ramp(), {{"scale", {Value("log")}}, {"range", {Value("manual")}}, {"minimum", {Value(0.0)}},
+                          {"maximum", {Value(10.0)}}});
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("log scale needs a positive manual range"));
+    }
+}

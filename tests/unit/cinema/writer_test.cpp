@@ -199,3 +199,50 @@ TEST(CinemaWriter, UnusableColumnNamesAreRefused) {
     EXPECT_THAT(errorOf([&] { CinemaWriter w(dir.file("file.cdb"), {"x"}); }),
                 HasSubstr("a file of that name exists"));
 }
+
+TEST(CinemaWriter, PngProductsAndAttachmentColumnsReadBackAndResume) {
+    test::TempDir dir;
+    const auto path = dir.file("shaded.cdb");
+    CinemaWriterOptions o;
+    o.productExtension = ".png";
+    o.attachments = {{"FILE_points", ".points.csv"}};
+    auto colour = [](double v) {
+        return test::makeImage(4, 3, {"R", "G", "B"}, [=](int, int, int c) { return float(v) * 0.1f * float(c + 1); });
+    };
+    {
+        CinemaWriter w(path, {"time"}, o);
+        w.addEntry({{"time", CinemaValue(2.0)}}, *colour(2), {{"FILE_points", "x,y,z\n2,0,0\n"}});
+        w.addEntry({{"time", CinemaValue(1.0)}}, *colour(1), {{"FILE_points", "x,y,z\n1,0,0\n"}});
+        EXPECT_THAT(errorOf([&] { w.addEntry({{"time", CinemaValue(3.0)}}, *colour(3)); }),
+                    HasSubstr("the file for column FILE_points is missing"));
+        EXPECT_THAT(errorOf([&] {
+                        w.addEntry({{"time", CinemaValue(3.0)}}, *colour(3),
+                                   {{"FILE_points", ""}, {"FILE_other", ""}});
+                    }),
+                    HasSubstr("FILE_other is not an attachment column"));
+        // Interrupted here: no finish().
+    }
+    EXPECT_EQ(test::readText(path + "/data.csv"),
+              "time,FILE,FILE_points\n"
+              "1,time=1.png,time=1.points.csv\n"
+              "2,time=2.png,time=2.points.csv\n");
+    EXPECT_EQ(test::readText(path + "/time=2.points.csv"), "x,y,z\n2,0,0\n");
+    const auto db = CinemaDatabase::open(path);
+    EXPECT_EQ(db.rowCount(), 2u);
+    EXPECT_EQ(db.productPath(1, "FILE_points"), path + "/time=2.points.csv");
+    const auto back = readImage(db.productPath(0));
+    EXPECT_NEAR(back->hostFloat("G")[0], 0.2f, 0.003f);  // 8-bit sRGB round trip
+    // A resume keeps complete entries only: remove one attachment.
+    fs::remove(path + "/time=2.points.csv");
+    o.resume = true;
+    CinemaWriter again(path, {"time"}, o);
+    EXPECT_EQ(again.resumedCount(), 1u);
+    EXPECT_TRUE(again.hasEntry({{"time", CinemaValue(1.0)}}));
+    EXPECT_FALSE(again.hasEntry({{"time", CinemaValue(2.0)}}));
+    again.finish();
+    // Columns that cannot work are refused up front.
+    o.resume = false;
+    o.attachments = {{"points", ".p.csv"}};
+    EXPECT_THAT(errorOf([&] { CinemaWriter bad(dir.file("bad.cdb"), {"time"}, o); }),
+                HasSubstr("attachment column 'points'"));
+}

@@ -57,6 +57,27 @@ Fixture fixtureFor(const std::string& type) {
             w.finish();
             in["database"] = {Value(dir.file("tiny.cdb"))};
         };
+    if (type == "CinemaWriter")
+        return [](const test::TempDir& dir, auto& in) {
+            in["row"] = {Value("phi=0")};
+            in["database"] = {Value(dir.file("written.cdb"))};
+        };
+    if (type == "Spheres")
+        return [](const test::TempDir& dir, auto& in) {
+            test::writeText(dir.file("points.csv"), "x,y,z,radius,value\n0,0,2,0.5,1\n");
+            in["points"] = {Value(dir.file("points.csv"))};
+        };
+    if (type == "Movie")
+        return [](const test::TempDir& dir, auto& in) {
+            CinemaWriterOptions o;
+            o.productExtension = ".png";
+            CinemaWriter w(dir.file("frames.cdb"), {"time"}, o);
+            w.addEntry({{"time", CinemaValue(0.0)}}, *syntheticImage({}));
+            w.addEntry({{"time", CinemaValue(1.0)}}, *syntheticImage({}));
+            w.finish();
+            in["database"] = {Value(dir.file("frames.cdb"))};
+            in["path"] = {Value(dir.file("frames.mp4"))};
+        };
     if (type == "Capture")
         return [](const test::TempDir& dir, auto& in) {
             test::writeText(dir.file("scene.yaml"),

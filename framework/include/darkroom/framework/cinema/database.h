@@ -49,6 +49,9 @@ struct CinemaProductInfo {
     std::string error;  // non-empty when the product could not be read
     // Format-specific facts: .npz members with dtype and shape, .vti arrays.
     std::vector<std::string> details;
+    // A .csv product is a point list (scene/point_list.h), not an image:
+    // `details` says how many points and which columns.
+    bool pointList = false;
 };
 
 // What `darkroom info` prints.

@@ -42,6 +42,14 @@ private:
 // Column name -> value; must name exactly the writer's columns.
 using CinemaParameters = std::map<std::string, CinemaValue>;
 
+// A further FILE column whose file is given as bytes with each entry, written
+// beside the product (e.g. the point list a capture keeps of objects it does
+// not ray trace): column "FILE_maxima", file "<entry><suffix>".
+struct CinemaAttachmentColumn {
+    std::string column;  // a FILE column name other than "FILE": "FILE_<name>"
+    std::string suffix;  // appended to the entry's name: ".maxima.csv"
+};
+
 struct CinemaWriterOptions {
     // Delete an existing database (it must look like one: have a data.csv)
     // and start afresh.
@@ -51,6 +59,11 @@ struct CinemaWriterOptions {
     // completes it. Its columns must match.
     bool resume = false;
     ImageWriteOptions image;  // compression etc. of the products
+    // ".exr" (every channel, camera in the header) or an 8-bit format OIIO
+    // writes (".png": linear colour sRGB-encoded, see writeImage).
+    std::string productExtension = ".exr";
+    // Columns after FILE, each with a file per entry (addEntry's attachments).
+    std::vector<CinemaAttachmentColumn> attachments;
 };
 
 class DARKROOM_API CinemaWriter {
@@ -73,10 +86,13 @@ public:
     // True when the entry is already in the database (kept by a resume or
     // added earlier); a resumed capture skips it.
     bool hasEntry(const CinemaParameters& parameters) const;
-    // Writes the product (replacing an earlier one with the same parameters)
-    // and then data.csv. Thread-safe. Throws darkroom::Error naming the
-    // parameters when they do not match the columns.
-    void addEntry(const CinemaParameters& parameters, const Buffer& image);
+    // Writes the product (replacing an earlier one with the same parameters),
+    // then each attachment, then data.csv. Thread-safe. Throws darkroom::Error
+    // naming the parameters when they do not match the columns, or when
+    // `attachments` (column -> file contents) does not give exactly the
+    // attachment columns.
+    void addEntry(const CinemaParameters& parameters, const Buffer& image,
+                  const std::map<std::string, std::string>& attachments = {});
 
     // Entries in the database now, and how many of them a resume kept.
     std::size_t entryCount() const;

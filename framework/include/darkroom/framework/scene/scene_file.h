@@ -28,6 +28,10 @@ struct SceneDescription {
     std::vector<CameraSample> cameras;
     CaptureRequest request;
     std::string backend = "embree";
+    // Objects marked `store: pointList`: not ray traced; `darkroom capture`
+    // writes each as a CSV point list beside every entry (column FILE_<name>)
+    // for the Spheres node to draw post hoc. Each vertex is a sphere.
+    std::vector<SceneObject> pointLists;
     std::vector<std::string> warnings;  // e.g. cells a reader skipped
 };
 
