@@ -1,0 +1,258 @@
+// Sort-last depth compositing: binary swap (with folding for rank counts
+// that are not powers of two) and an MPI_Reduce baseline. See
+// depth_compositing.h for the rule and docs/scale-out.md for the costs.
+#include <darkroom/error.h>
+#include <darkroom/mpi/depth_compositing.h>
+
+#include <bit>
+#include <climits>
+#include <cstring>
+
+namespace darkroom::mpi {
+
+const char* toString(CompositeAlgorithm a) {
+    switch (a) {
+        case CompositeAlgorithm::BinarySwap: return "binary-swap";
+        case CompositeAlgorithm::Reduce: return "reduce";
+    }
+    return "?";
+}
+
+namespace {
+
+constexpr int kFoldTag = 7101;
+constexpr int kSwapTag = 7102;
+
+std::string layoutOf(const GBufferImage& image) {
+    std::string s = std::to_string(image.width) + "x" + std::to_string(image.height) + " [";
+    for (std::size_t c = 0; c < image.channels.size(); ++c)
+        s += (c ? ", " : "") + image.channels[c].name + ":" + toString(image.channels[c].type);
+    return s + "]";
+}
+
+void checkLayouts(const Communicator& comm, const GBufferImage& image) {
+    if (image.planes.size() != image.channels.size())
+        throw Error("depth compositing: the image has " + std::to_string(image.channels.size()) + " channels but " +
+                    std::to_string(image.planes.size()) + " planes");
+    for (const auto& p : image.planes)
+        if (p.size() != image.pixelCount())
+            throw Error("depth compositing: a plane has " + std::to_string(p.size()) + " values, expected " +
+                        std::to_string(image.pixelCount()));
+    const std::vector<std::string> all = comm.allGather(layoutOf(image));
+    for (int r = 1; r < comm.size(); ++r)
+        if (all[std::size_t(r)] != all[0])
+            throw Error("depth compositing: rank " + std::to_string(r) + " holds a G-buffer " + all[std::size_t(r)] +
+                        " but rank 0 holds " + all[0] + "; every rank must render the same channels at the same size");
+    const int z = image.channelIndex("Z");
+    if (z < 0 || image.channels[std::size_t(z)].type != ChannelType::Float32)
+        throw Error("depth compositing: the G-buffer " + all[0] + " has no float channel 'Z' to compare depths by");
+    if (image.pixelCount() * image.channels.size() > std::size_t(INT_MAX))
+        throw Error("depth compositing: " + all[0] + " has more than 2^31 values; composite smaller images");
+}
+
+// The pixels [first, first + count) of every channel, as one MPI datatype
+// over absolute addresses (send from MPI_BOTTOM): no packing copy.
+class RangeType {
+public:
+    RangeType(GBufferImage& image, std::size_t first, std::size_t count) {
+        std::vector<MPI_Aint> addresses(image.planes.size());
+        for (std::size_t c = 0; c < image.planes.size(); ++c)
+            check(MPI_Get_address(image.planes[c].data() + first, &addresses[c]), "MPI_Get_address");
+        check(MPI_Type_create_hindexed_block(int(image.planes.size()), int(count), addresses.data(), MPI_UINT32_T,
+                                             &type_),
+              "MPI_Type_create_hindexed_block");
+        check(MPI_Type_commit(&type_), "MPI_Type_commit");
+    }
+    ~RangeType() { MPI_Type_free(&type_); }
+    RangeType(const RangeType&) = delete;
+    RangeType& operator=(const RangeType&) = delete;
+    MPI_Datatype type() const { return type_; }
+
+private:
+    MPI_Datatype type_ = MPI_DATATYPE_NULL;
+};
+
+bool binarySwap(const Communicator& comm, GBufferImage& image, int root, CompositeStats& stats) {
+    const int P = comm.size(), r = comm.rank();
+    const std::size_t n = image.pixelCount(), nch = image.channels.size();
+    MPI_Comm c = comm.handle();
+    int pow2 = 1;
+    while (pow2 * 2 <= P) pow2 *= 2;
+    const int extra = P - pow2;
+    std::vector<std::uint32_t> received;
+
+    // Fold: ranks 2i+1 (i < extra) hand their whole image to 2i and sit out.
+    int v = -1;  // index among the pow2 ranks that swap; -1 = folded away
+    if (r < 2 * extra) {
+        if (r % 2 == 1) {
+            double t = MPI_Wtime();
+            RangeType all(image, 0, n);
+            check(MPI_Send(MPI_BOTTOM, 1, all.type(), r - 1, kFoldTag, c), "MPI_Send");
+            stats.exchangeSeconds += MPI_Wtime() - t;
+            stats.bytesSent += n * nch * 4;
+        } else {
+            double t = MPI_Wtime();
+            received.resize(n * nch);
+            check(MPI_Recv(received.data(), int(n * nch), MPI_UINT32_T, r + 1, kFoldTag, c, MPI_STATUS_IGNORE),
+                  "MPI_Recv");
+            stats.exchangeSeconds += MPI_Wtime() - t;
+            t = MPI_Wtime();
+            mergeNearest(image, 0, n, received.data(), false);
+            stats.mergeSeconds += MPI_Wtime() - t;
+            v = r / 2;
+        }
+    } else {
+        v = r - extra;
+    }
+    auto rankOf = [extra](int virtualRank) { return virtualRank < extra ? 2 * virtualRank : virtualRank + extra; };
+
+    // Swap: partners differ in one bit, lowest first, so every group that has
+    // been merged is a contiguous range of ranks and the partner's group lies
+    // wholly below or above ours.
+    std::size_t lo = 0, hi = n;
+    if (v >= 0) {
+        for (int bit = 1; bit < pow2; bit *= 2) {
+            const int pv = v ^ bit;
+            const bool partnerLower = pv < v;
+            const std::size_t mid = lo + (hi - lo) / 2;
+            const std::size_t keepLo = partnerLower ? mid : lo, keepHi = partnerLower ? hi : mid;
+            const std::size_t giveLo = partnerLower ? lo : mid, giveHi = partnerLower ? mid : hi;
+            const std::size_t keep = keepHi - keepLo, give = giveHi - giveLo;
+            double t = MPI_Wtime();
+            received.resize(keep * nch);
+            RangeType out(image, giveLo, give);
+            check(MPI_Sendrecv(MPI_BOTTOM, 1, out.type(), rankOf(pv), kSwapTag, received.data(), int(keep * nch),
+                               MPI_UINT32_T, rankOf(pv), kSwapTag, c, MPI_STATUS_IGNORE),
+                  "MPI_Sendrecv");
+            stats.exchangeSeconds += MPI_Wtime() - t;
+            stats.bytesSent += give * nch * 4;
+            t = MPI_Wtime();
+            mergeNearest(image, keepLo, keep, received.data(), partnerLower);
+            stats.mergeSeconds += MPI_Wtime() - t;
+            lo = keepLo;
+            hi = keepHi;
+        }
+    } else {
+        lo = hi = 0;  // owns nothing
+    }
+
+    // Gather the pieces at the root.
+    const double t = MPI_Wtime();
+    unsigned long long mine[2] = {lo, hi - lo};
+    std::vector<unsigned long long> pieces(r == root ? 2 * std::size_t(P) : 0);
+    check(MPI_Gather(mine, 2, MPI_UNSIGNED_LONG_LONG, pieces.data(), 2, MPI_UNSIGNED_LONG_LONG, root, c), "MPI_Gather");
+    std::vector<int> counts, displacements;
+    if (r == root) {
+        int offset = 0;
+        for (int k = 0; k < P; ++k) {
+            counts.push_back(int(pieces[2 * std::size_t(k) + 1] * nch));
+            displacements.push_back(offset);
+            offset += counts.back();
+        }
+        received.resize(std::size_t(offset));
+    }
+    RangeType piece(image, lo, hi - lo);
+    check(MPI_Gatherv(MPI_BOTTOM, hi > lo ? 1 : 0, piece.type(), received.data(), counts.data(), displacements.data(),
+                      MPI_UINT32_T, root, c),
+          "MPI_Gatherv");
+    if (r != root) stats.bytesSent += (hi - lo) * nch * 4;
+    if (r == root) {
+        for (int k = 0; k < P; ++k) {
+            const std::size_t first = pieces[2 * std::size_t(k)], count = pieces[2 * std::size_t(k) + 1];
+            const std::uint32_t* src = received.data() + displacements[std::size_t(k)];
+            for (std::size_t ch = 0; ch < nch; ++ch)
+                std::memcpy(image.planes[ch].data() + first, src + ch * count, count * 4);
+        }
+    }
+    stats.gatherSeconds += MPI_Wtime() - t;
+    return r == root;
+}
+
+// MPI_Reduce operator on records [Z, other channels...]: the left operand
+// (`in`, from lower ranks) wins ties. Its record length comes from the datatype.
+void nearestRecord(void* in, void* inout, int* len, MPI_Datatype* type) {
+    int bytes = 0;
+    MPI_Type_size(*type, &bytes);
+    const std::size_t k = std::size_t(bytes) / 4;
+    const auto* a = static_cast<const std::uint32_t*>(in);
+    auto* b = static_cast<std::uint32_t*>(inout);
+    for (std::size_t i = 0, n = std::size_t(*len); i < n; ++i, a += k, b += k)
+        if (std::bit_cast<float>(a[0]) <= std::bit_cast<float>(b[0])) std::memcpy(b, a, k * 4);
+}
+
+bool reduce(const Communicator& comm, GBufferImage& image, int root, CompositeStats& stats) {
+    const std::size_t n = image.pixelCount(), nch = image.channels.size();
+    const std::size_t z = std::size_t(image.channelIndex("Z"));
+    // Record layout: Z first, then the other channels in order.
+    std::vector<std::size_t> order{z};
+    for (std::size_t c = 0; c < nch; ++c)
+        if (c != z) order.push_back(c);
+    double t = MPI_Wtime();
+    std::vector<std::uint32_t> records(n * nch), result(comm.rank() == root ? n * nch : 0);
+    for (std::size_t k = 0; k < nch; ++k) {
+        const std::uint32_t* src = image.planes[order[k]].data();
+        for (std::size_t i = 0; i < n; ++i) records[i * nch + k] = src[i];
+    }
+    stats.mergeSeconds += MPI_Wtime() - t;
+    MPI_Datatype record;
+    check(MPI_Type_contiguous(int(nch), MPI_UINT32_T, &record), "MPI_Type_contiguous");
+    MPI_Type_commit(&record);
+    MPI_Op op;
+    check(MPI_Op_create(&nearestRecord, 0 /* not commutative: ties go to the lower rank */, &op), "MPI_Op_create");
+    t = MPI_Wtime();
+    const int code = MPI_Reduce(records.data(), result.data(), int(n), record, op, root, comm.handle());
+    stats.exchangeSeconds += MPI_Wtime() - t;
+    MPI_Op_free(&op);
+    MPI_Type_free(&record);
+    check(code, "MPI_Reduce");
+    stats.bytesSent += comm.rank() == root ? 0 : n * nch * 4;
+    if (comm.rank() != root) return false;
+    t = MPI_Wtime();
+    for (std::size_t k = 0; k < nch; ++k) {
+        std::uint32_t* dst = image.planes[order[k]].data();
+        for (std::size_t i = 0; i < n; ++i) dst[i] = result[i * nch + k];
+    }
+    stats.mergeSeconds += MPI_Wtime() - t;
+    return true;
+}
+
+}  // namespace
+
+std::size_t mergeNearest(GBufferImage& mine, std::size_t first, std::size_t count, const std::uint32_t* other,
+                         bool otherIsLower) {
+    const int zc = mine.channelIndex("Z");
+    if (zc < 0) throw Error("depth compositing: the G-buffer has no channel 'Z'");
+    const std::uint32_t* oz = other + std::size_t(zc) * count;
+    const std::uint32_t* mz = mine.planes[std::size_t(zc)].data() + first;
+    std::vector<std::uint8_t> take(count);
+    std::size_t taken = 0;
+    if (otherIsLower)
+        for (std::size_t i = 0; i < count; ++i) taken += take[i] = std::bit_cast<float>(oz[i]) <= std::bit_cast<float>(mz[i]);
+    else
+        for (std::size_t i = 0; i < count; ++i) taken += take[i] = std::bit_cast<float>(oz[i]) < std::bit_cast<float>(mz[i]);
+    if (taken == 0) return 0;
+    for (std::size_t c = 0; c < mine.planes.size(); ++c) {
+        std::uint32_t* dst = mine.planes[c].data() + first;
+        const std::uint32_t* src = other + c * count;
+        for (std::size_t i = 0; i < count; ++i) dst[i] = take[i] ? src[i] : dst[i];
+    }
+    return taken;
+}
+
+bool compositeByDepth(const Communicator& comm, GBufferImage& image, const CompositeOptions& options,
+                      CompositeStats* stats) {
+    if (options.root < 0 || options.root >= comm.size())
+        throw Error("depth compositing: root rank " + std::to_string(options.root) + " is not in the communicator of " +
+                    std::to_string(comm.size()) + " ranks");
+    checkLayouts(comm, image);
+    CompositeStats local;
+    CompositeStats& s = stats ? *stats : local;
+    if (comm.size() == 1) return true;
+    switch (options.algorithm) {
+        case CompositeAlgorithm::BinarySwap: return binarySwap(comm, image, options.root, s);
+        case CompositeAlgorithm::Reduce: return reduce(comm, image, options.root, s);
+    }
+    return false;
+}
+
+}  // namespace darkroom::mpi
