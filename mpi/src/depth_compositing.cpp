@@ -4,6 +4,7 @@
 #include <darkroom/error.h>
 #include <darkroom/mpi/depth_compositing.h>
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cstring>
@@ -19,6 +20,24 @@ const char* toString(CompositeAlgorithm a) {
 }
 
 namespace {
+
+// The id channels that break ties in depth, when the G-buffer has both.
+struct IdChannels {
+    bool present = false;
+    std::size_t object = 0, primitive = 0;
+};
+
+IdChannels idChannels(const GBufferImage& g) {
+    const int o = g.channelIndex("objectId"), p = g.channelIndex("primitiveId");
+    if (o < 0 || p < 0 || g.channels[std::size_t(o)].type != ChannelType::UInt32 ||
+        g.channels[std::size_t(p)].type != ChannelType::UInt32)
+        return {};
+    return {true, std::size_t(o), std::size_t(p)};
+}
+
+std::uint64_t idKey(const std::uint32_t* object, const std::uint32_t* primitive, std::size_t i) {
+    return std::uint64_t(object[i]) << 32 | primitive[i];
+}
 
 constexpr int kFoldTag = 7101;
 constexpr int kSwapTag = 7102;
@@ -168,25 +187,34 @@ bool binarySwap(const Communicator& comm, GBufferImage& image, int root, Composi
     return r == root;
 }
 
-// MPI_Reduce operator on records [Z, other channels...]: the left operand
-// (`in`, from lower ranks) wins ties. Its record length comes from the datatype.
+// MPI_Reduce operators on records [Z, other channels...] and [Z, objectId,
+// primitiveId, other channels...]: the nearer record wins, at equal depth the
+// lower ids (second form), then the left operand (`in`, from lower ranks).
+// The record length comes from the datatype.
+template <bool withIds>
 void nearestRecord(void* in, void* inout, int* len, MPI_Datatype* type) {
     int bytes = 0;
     MPI_Type_size(*type, &bytes);
     const std::size_t k = std::size_t(bytes) / 4;
     const auto* a = static_cast<const std::uint32_t*>(in);
     auto* b = static_cast<std::uint32_t*>(inout);
-    for (std::size_t i = 0, n = std::size_t(*len); i < n; ++i, a += k, b += k)
-        if (std::bit_cast<float>(a[0]) <= std::bit_cast<float>(b[0])) std::memcpy(b, a, k * 4);
+    for (std::size_t i = 0, n = std::size_t(*len); i < n; ++i, a += k, b += k) {
+        const float za = std::bit_cast<float>(a[0]), zb = std::bit_cast<float>(b[0]);
+        bool left = za < zb;
+        if (za == zb) left = !withIds || idKey(a + 1, a + 2, 0) <= idKey(b + 1, b + 2, 0);
+        if (left) std::memcpy(b, a, k * 4);
+    }
 }
 
 bool reduce(const Communicator& comm, GBufferImage& image, int root, CompositeStats& stats) {
     const std::size_t n = image.pixelCount(), nch = image.channels.size();
     const std::size_t z = std::size_t(image.channelIndex("Z"));
-    // Record layout: Z first, then the other channels in order.
+    // Record layout: Z first, then the ids if present, then the other channels in order.
+    const IdChannels ids = idChannels(image);
     std::vector<std::size_t> order{z};
+    if (ids.present) order.insert(order.end(), {ids.object, ids.primitive});
     for (std::size_t c = 0; c < nch; ++c)
-        if (c != z) order.push_back(c);
+        if (std::find(order.begin(), order.end(), c) == order.end()) order.push_back(c);
     double t = MPI_Wtime();
     std::vector<std::uint32_t> records(n * nch), result(comm.rank() == root ? n * nch : 0);
     for (std::size_t k = 0; k < nch; ++k) {
@@ -198,7 +226,9 @@ bool reduce(const Communicator& comm, GBufferImage& image, int root, CompositeSt
     check(MPI_Type_contiguous(int(nch), MPI_UINT32_T, &record), "MPI_Type_contiguous");
     MPI_Type_commit(&record);
     MPI_Op op;
-    check(MPI_Op_create(&nearestRecord, 0 /* not commutative: ties go to the lower rank */, &op), "MPI_Op_create");
+    check(MPI_Op_create(ids.present ? &nearestRecord<true> : &nearestRecord<false>,
+                        0 /* not commutative: full ties go to the lower rank */, &op),
+          "MPI_Op_create");
     t = MPI_Wtime();
     const int code = MPI_Reduce(records.data(), result.data(), int(n), record, op, root, comm.handle());
     stats.exchangeSeconds += MPI_Wtime() - t;
@@ -224,12 +254,25 @@ std::size_t mergeNearest(GBufferImage& mine, std::size_t first, std::size_t coun
     if (zc < 0) throw Error("depth compositing: the G-buffer has no channel 'Z'");
     const std::uint32_t* oz = other + std::size_t(zc) * count;
     const std::uint32_t* mz = mine.planes[std::size_t(zc)].data() + first;
+    const IdChannels ids = idChannels(mine);
     std::vector<std::uint8_t> take(count);
     std::size_t taken = 0;
-    if (otherIsLower)
-        for (std::size_t i = 0; i < count; ++i) taken += take[i] = std::bit_cast<float>(oz[i]) <= std::bit_cast<float>(mz[i]);
-    else
-        for (std::size_t i = 0; i < count; ++i) taken += take[i] = std::bit_cast<float>(oz[i]) < std::bit_cast<float>(mz[i]);
+    for (std::size_t i = 0; i < count; ++i) {
+        const float a = std::bit_cast<float>(oz[i]), b = std::bit_cast<float>(mz[i]);
+        bool t = a < b;
+        if (a == b) {
+            if (ids.present) {
+                const std::uint64_t ka = idKey(other + ids.object * count, other + ids.primitive * count, i);
+                const std::uint64_t kb = idKey(mine.planes[ids.object].data() + first,
+                                               mine.planes[ids.primitive].data() + first, i);
+                t = ka < kb || (ka == kb && otherIsLower);
+            } else {
+                t = otherIsLower;
+            }
+        }
+        take[i] = t;
+        taken += t;
+    }
     if (taken == 0) return 0;
     for (std::size_t c = 0; c < mine.planes.size(); ++c) {
         std::uint32_t* dst = mine.planes[c].data() + first;

@@ -24,7 +24,15 @@ std::uint32_t hash(std::uint32_t x) {
 
 // Rank r's G-buffer: depths from a few levels (so ranks tie often) or
 // background; every other channel says which rank and pixel it came from.
-GBufferImage rankImage(int rank, int w, int h) {
+// Object ids run opposite to ranks, so that a tie goes to the higher rank
+// when ids are there to break it.
+int worldSize() {
+    int size = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    return size;
+}
+
+GBufferImage rankImage(int rank, int w, int h, bool ids = true) {
     GBufferImage g;
     g.width = w;
     g.height = h;
@@ -40,28 +48,38 @@ GBufferImage rankImage(int rank, int w, int h) {
         g.planes[0][i] = std::bit_cast<std::uint32_t>(z);
         g.planes[1][i] = std::bit_cast<std::uint32_t>(hit ? float(rank) * 1000.0f + float(i) : std::nanf(""));
         g.planes[2][i] = std::bit_cast<std::uint32_t>(hit ? 0.5f * float(rank) : std::nanf(""));
-        g.planes[3][i] = hit ? std::uint32_t(rank) : ~0u;
+        g.planes[3][i] = hit ? std::uint32_t(worldSize() - 1 - rank) : ~0u;
         g.planes[4][i] = hit ? std::uint32_t(i) : ~0u;
+    }
+    if (!ids) {
+        g.channels.resize(3);
+        g.planes.resize(3);
     }
     g.metadata.attributes["units.Z"] = "world";
     return g;
 }
 
-// Per pixel, the image of the rank with the smallest (Z, rank).
-GBufferImage reference(int ranks, int w, int h) {
-    GBufferImage best = rankImage(0, w, h);
+// Per pixel, the image of the rank with the smallest (Z, objectId,
+// primitiveId, rank), or (Z, rank) without ids.
+GBufferImage reference(int ranks, int w, int h, bool ids) {
+    GBufferImage best = rankImage(0, w, h, ids);
     for (int r = 1; r < ranks; ++r) {
-        const GBufferImage g = rankImage(r, w, h);
-        for (std::size_t i = 0; i < best.pixelCount(); ++i)
-            if (std::bit_cast<float>(g.planes[0][i]) < std::bit_cast<float>(best.planes[0][i]))
+        const GBufferImage g = rankImage(r, w, h, ids);
+        for (std::size_t i = 0; i < best.pixelCount(); ++i) {
+            const float z = std::bit_cast<float>(g.planes[0][i]), bz = std::bit_cast<float>(best.planes[0][i]);
+            const bool idsLower = ids && std::isfinite(z) &&
+                                  (g.planes[3][i] < best.planes[3][i] ||
+                                   (g.planes[3][i] == best.planes[3][i] && g.planes[4][i] < best.planes[4][i]));
+            if (z < bz || (z == bz && idsLower))
                 for (std::size_t c = 0; c < g.planes.size(); ++c) best.planes[c][i] = g.planes[c][i];
+        }
     }
     return best;
 }
 
-void expectComposite(CompositeAlgorithm algorithm, int root, int w, int h, bool tiny = false) {
+void expectComposite(CompositeAlgorithm algorithm, int root, int w, int h, bool tiny = false, bool ids = true) {
     const Communicator comm(MPI_COMM_WORLD);
-    GBufferImage mine = rankImage(comm.rank(), w, h);
+    GBufferImage mine = rankImage(comm.rank(), w, h, ids);
     CompositeOptions o;
     o.algorithm = algorithm;
     o.root = root;
@@ -69,19 +87,21 @@ void expectComposite(CompositeAlgorithm algorithm, int root, int w, int h, bool 
     const bool isRoot = compositeByDepth(comm, mine, o, &stats);
     EXPECT_EQ(isRoot, comm.rank() == root);
     if (!isRoot) return;
-    const GBufferImage want = reference(comm.size(), w, h);
+    const GBufferImage want = reference(comm.size(), w, h, ids);
     std::size_t fromOtherRanks = 0, ties = 0;
     for (std::size_t i = 0; i < want.pixelCount(); ++i) {
         for (std::size_t c = 0; c < want.planes.size(); ++c)
             ASSERT_EQ(mine.planes[c][i], want.planes[c][i])
                 << toString(algorithm) << " root " << root << ": pixel " << i << " channel " << want.channels[c].name;
-        fromOtherRanks += want.planes[3][i] != ~0u && want.planes[3][i] != std::uint32_t(root);
+        // The winner's rank, from its "temperature" (rank * 1000 + pixel).
+        const float value = std::bit_cast<float>(want.planes[1][i]);
+        fromOtherRanks += std::isfinite(value) && int(value / 1000.0f) != root;
     }
     for (std::size_t i = 0; i < want.pixelCount(); ++i) {
-        // Count pixels where a higher rank had the same depth as the winner.
+        // Count pixels where another rank had the same depth as the winner.
         int level = 0;
         for (int r = 0; r < comm.size(); ++r)
-            level += rankImage(r, w, h).planes[0][i] == want.planes[0][i];
+            level += rankImage(r, w, h, ids).planes[0][i] == want.planes[0][i];
         ties += level > 1 && std::isfinite(std::bit_cast<float>(want.planes[0][i]));
     }
     // The test is only meaningful if it exercised both kinds of pixels.
@@ -103,6 +123,11 @@ TEST(DepthCompositing, BinarySwapEqualsTheReferenceAtTheLastRank) {
 }
 
 TEST(DepthCompositing, ReduceEqualsTheReference) { expectComposite(CompositeAlgorithm::Reduce, 0, 37, 23); }
+
+TEST(DepthCompositing, WithoutIdsTiesGoToTheLowerRank) {
+    expectComposite(CompositeAlgorithm::BinarySwap, 0, 37, 23, false, /*ids=*/false);
+    expectComposite(CompositeAlgorithm::Reduce, 0, 37, 23, false, /*ids=*/false);
+}
 
 TEST(DepthCompositing, AnImageSmallerThanTheRankCountStillComposites) {
     expectComposite(CompositeAlgorithm::BinarySwap, 0, 1, 2, /*tiny=*/true);

@@ -60,6 +60,22 @@ TEST(MergeRule, NearerHitReplacesEveryChannel) {
     EXPECT_EQ(lower.planes[2][3], 2u);
 }
 
+TEST(MergeRule, WithIdsEqualDepthsGoToTheLowerObjectThenPrimitive) {
+    GBufferImage mine;
+    mine.width = 3;
+    mine.height = 1;
+    mine.channels = {{"Z", ChannelType::Float32}, {"objectId", ChannelType::UInt32}, {"primitiveId", ChannelType::UInt32}};
+    const std::uint32_t z = std::bit_cast<std::uint32_t>(2.0f);
+    mine.planes = {{z, z, z}, {1, 1, 1}, {5, 5, 5}};
+    // Planar: Z, objectId, primitiveId of three pixels.
+    const std::vector<std::uint32_t> other = {z, z, z, /*objects*/ 0, 1, 2, /*primitives*/ 9, 4, 0};
+    // A lower object wins; the same object with a lower primitive wins; a
+    // higher object loses even though the other image is from a lower rank.
+    EXPECT_EQ(mergeNearest(mine, 0, 3, other.data(), /*otherIsLower=*/true), 2u);
+    EXPECT_EQ(mine.planes[1], (std::vector<std::uint32_t>{0, 1, 1}));
+    EXPECT_EQ(mine.planes[2], (std::vector<std::uint32_t>{9, 4, 5}));
+}
+
 TEST(MergeRule, MergesOnlyTheGivenRange) {
     GBufferImage mine = image(5, 2);
     for (std::size_t i = 0; i < 10; ++i) setPixel(mine, i, 5.0f, 1.0f, 1);

@@ -1,4 +1,6 @@
+#include "capture_over_ranks.h"
 #include "commands.h"
+#include "processes.h"
 #include "progress_bar.h"
 
 #include <darkroom/capture_backend.h>
@@ -34,6 +36,9 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->callback([&global, &run, a] {
         run = [&global, a] {
+            if (processes().size > 1)
+                return captureOverRanks(global, {a->scene, a->output, a->compression, a->overwrite, a->resume,
+                                                 a->half, a->threads});
             const Registry& registry = loadRegistry(global);
             SceneDescription scene;
             try {

@@ -3,6 +3,7 @@
 #include "embree_scene.h"
 #include "flush_denormals.h"
 #include "gbuffer_writer.h"
+#include "nearest_hit_rule.h"
 #include "primary_rays.h"
 
 #include <darkroom/error.h>
@@ -53,9 +54,7 @@ public:
         RTCScene scene = bvh_->handle();
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
-            RTCIntersectContext ic;
-            rtcInitIntersectContext(&ic);
-            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
             for (int tile = begin; tile < end; ++tile) {
                 if (ctx.cancelled()) return;
                 traceTile(scene, &ic, rays, writer, camera.width, camera.height, (tile % tilesX) * kTile,
@@ -77,9 +76,7 @@ public:
         const int packets = int((n + 7) / 8);
         ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {
             const FlushDenormals ftz;
-            RTCIntersectContext ic;
-            rtcInitIntersectContext(&ic);
-            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
             alignas(32) RTCRayHit8 rh;
             alignas(32) int valid[8];
             for (int p = begin; p < end; ++p) {
@@ -90,7 +87,8 @@ public:
                     rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
-                rtcIntersect8(valid, scene, &ic, &rh);
+                ic.reset();
+                rtcIntersect8(valid, scene, &ic.context, &rh);
                 for (int k = 0; k < 8; ++k) {
                     if (!valid[k]) continue;
                     const std::size_t i = first + std::size_t(k);
@@ -178,7 +176,7 @@ private:
         }
     }
 
-    static void traceTile(RTCScene scene, RTCIntersectContext* ic, const PrimaryRays& rays,
+    static void traceTile(RTCScene scene, NearestHitContext* ic, const PrimaryRays& rays,
                           const GBufferWriter& writer, int width, int height, int x0, int y0) {
         alignas(32) RTCRayHit8 rh;
         alignas(32) int valid[8];
@@ -206,7 +204,8 @@ private:
                     rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
-                rtcIntersect8(valid, scene, ic, &rh);
+                ic->reset();
+                rtcIntersect8(valid, scene, &ic->context, &rh);
                 for (int k = 0; k < 8; ++k)
                     if (valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
                         writer.prefetch(SurfaceHit{0.0f, rh.hit.geomID[k], rh.hit.primID[k], 0.0f, 0.0f, {}});

@@ -108,6 +108,9 @@ SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> 
     device_->check("cannot create a scene");
     // A capture renders many views of one scene, so a better BVH pays off.
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    // Ties in depth go to the lowest ids (nearest_hit_rule.h), through the
+    // intersection context's filter.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
 
     try {
         build();

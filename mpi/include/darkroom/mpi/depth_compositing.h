@@ -5,10 +5,16 @@
 // its own part of the scene. The composite keeps, per pixel, every channel of
 // the nearest hit: the rank whose "Z" is smallest gives its Z, scalars,
 // normals and ids together, so a pixel never mixes the depth of one hit with
-// the field of another. At equal Z the lower rank wins, which makes the
-// result independent of the order of the exchanges (the rule is associative:
-// it is the minimum of (Z, rank)). Z must not be NaN (captures store +inf on
-// background).
+// the field of another.
+//
+// Ties: at equal Z the hit with the lower (objectId, primitiveId) wins when
+// the G-buffer has both uint32 channels, which is the rule the Embree
+// capture applies inside one process (capture-embree's nearest_hit_rule.h),
+// so a composite of ids made global equals the single-process capture
+// whatever the partition. Without ids, or at equal ids (background), the
+// lower rank wins. Either way the rule is the minimum of a total order, so
+// the result does not depend on the order of the exchanges. Z must not be
+// NaN (captures store +inf on background).
 //
 // Algorithms (docs/scale-out.md has the cost model):
 // - BinarySwap: log2(P) rounds in which partners swap halves of the part of
@@ -51,9 +57,9 @@ struct CompositeStats {
 bool compositeByDepth(const Communicator& comm, GBufferImage& image, const CompositeOptions& options = {},
                       CompositeStats* stats = nullptr);
 
-// The merge rule on one range of pixels, exposed for tests: where
-// `other` is nearer (or equally near and `otherIsLower`), copy all of its
-// channels over `mine`. `other` is planar: channel c of the range starts at
+// The merge rule on one range of pixels, exposed for tests: where `other`
+// is nearer (or equally near with lower ids, or equal in both and
+// `otherIsLower`), copy all of its channels over `mine`. `other` is planar: channel c of the range starts at
 // other + c * count. Returns the number of pixels taken from `other`.
 std::size_t mergeNearest(GBufferImage& mine, std::size_t first, std::size_t count, const std::uint32_t* other,
                          bool otherIsLower);
