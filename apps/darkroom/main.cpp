@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
                    "DARKROOM_PLUGIN_PATH (repeatable)")
         ->type_name("DIR");
     app.add_flag("-q,--quiet", global.quiet, "No progress output");
+    app.add_flag("--progress", global.progress,
+                 "Draw the progress bar even when stderr is not a terminal (under mpirun, where rank 0 alone draws it)");
 
     Runner run;
     addPluginsCommand(app, global, run);

@@ -131,7 +131,7 @@ int captureOverRanks(const GlobalOptions& global, const CaptureSettings& setting
     ro.threads = settings.threads ? settings.threads : defaultThreads();
     ro.registry = &registry;
     std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
-    ProgressBar bar("capture", root && !global.quiet && stderrIsTerminal());
+    ProgressBar bar("capture", showProgress(global));
     const double start = MPI_Wtime();
     double traceSeconds = 0, writeSeconds = 0;
     mpi::CompositeStats stats;

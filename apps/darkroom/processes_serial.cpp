@@ -27,3 +27,11 @@ int captureOverRanks(const GlobalOptions&, const CaptureSettings&) {
 }
 
 }  // namespace darkroom::cli
+
+#include "entry_scheduler.h"
+
+namespace darkroom::cli {
+
+std::unique_ptr<EntryScheduler> makeEntryScheduler() { return std::make_unique<SerialEntryScheduler>(); }
+
+}  // namespace darkroom::cli

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <set>
 #include <string>
+#include <thread>
 
 namespace darkroom::mpi {
 namespace {
@@ -37,6 +39,32 @@ TEST(SharedCounters, EveryIndexIsTakenOnceAndTheSecondCounterCountsThem) {
     }
     ASSERT_EQ(all.size(), std::size_t(kItems));
     for (int i = 0; i < kItems; ++i) EXPECT_EQ(all.count(i), 1u) << i;
+}
+
+TEST(SharedCounters, ARankWithCostlierItemsTakesFewer) {
+    // Dynamic self-scheduling balances by cost, not by count: rank 1's items
+    // take ten times as long (a sleep, so the machine's load does not matter).
+    const Communicator comm(MPI_COMM_WORLD);
+    if (comm.size() < 3) GTEST_SKIP() << "needs at least 3 ranks";
+    constexpr int kItems = 120;
+    int mine = 0;
+    {
+        SharedCounters counters(comm, 1);
+        while (counters.fetchAdd(0) < kItems) {
+            ++mine;
+            std::this_thread::sleep_for(std::chrono::milliseconds(comm.rank() == 1 ? 30 : 3));
+        }
+        comm.barrier();
+    }
+    std::vector<int> counts;
+    for (const auto& s : comm.allGather(std::to_string(mine))) counts.push_back(std::stoi(s));
+    int total = 0, others = kItems;
+    for (int r = 0; r < comm.size(); ++r) {
+        total += counts[std::size_t(r)];
+        if (r != 1) others = std::min(others, counts[std::size_t(r)]);
+    }
+    EXPECT_EQ(total, kItems);
+    EXPECT_LT(counts[1] * 3, others) << "rank 1 took " << counts[1] << " items, the least of the others " << others;
 }
 
 }  // namespace

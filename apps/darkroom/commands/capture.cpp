@@ -74,7 +74,7 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             ro.threads = a->threads;
             ro.registry = &registry;
             std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
-            ProgressBar bar("capture", !global.quiet && stderrIsTerminal());
+            ProgressBar bar("capture", showProgress(global));
             const auto start = std::chrono::steady_clock::now();
             std::size_t rendered = 0, skipped = 0;
             for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
