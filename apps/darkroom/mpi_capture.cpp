@@ -9,7 +9,7 @@
 #include <darkroom/framework/cinema/writer.h>
 #include <darkroom/framework/run_filter.h>
 #include <darkroom/framework/scene/scene_partition.h>
-#include <darkroom/mpi/depth_compositing.h>
+#include <darkroom/mpi/distributed_capture.h>
 #include <darkroom/mpi/mpi_process_group.h>
 
 #include <fmt/core.h>
@@ -19,41 +19,6 @@
 #include <sstream>
 
 namespace darkroom::cli {
-
-namespace {
-
-constexpr std::uint32_t kNoId = 0xFFFFFFFFu;
-
-// The first non-empty message of all ranks ("rank k: ..." unless every
-// rank reports the same), or "" when none failed. Collective.
-std::string agreedError(const mpi::Communicator& comm, const std::string& mine) {
-    const auto all = comm.allGather(mine);
-    for (std::size_t r = 0; r < all.size(); ++r) {
-        if (all[r].empty()) continue;
-        const bool everywhere = std::all_of(all.begin(), all.end(), [&](const std::string& s) { return s == all[r]; });
-        return everywhere ? all[r] : "rank " + std::to_string(r) + ": " + all[r];
-    }
-    return {};
-}
-
-// Local primitive ids become the whole object's: primitiveId += the offset
-// of this rank's share of the object that was hit.
-void globaliseIds(mpi::GBufferImage& image, const std::vector<std::uint64_t>& offsets) {
-    const std::uint32_t* object = image.uintPlane("objectId");
-    std::uint32_t* primitive = image.uintPlane("primitiveId");
-    if (!object || !primitive) return;
-    for (std::size_t i = 0, n = image.pixelCount(); i < n; ++i)
-        if (object[i] != kNoId) primitive[i] = std::uint32_t(primitive[i] + offsets[object[i]]);
-}
-
-void removeChannel(mpi::GBufferImage& image, const std::string& name) {
-    const int c = image.channelIndex(name);
-    if (c < 0) return;
-    image.channels.erase(image.channels.begin() + c);
-    image.planes.erase(image.planes.begin() + c);
-}
-
-}  // namespace
 
 int captureOverRanks(const GlobalOptions& global, const CaptureSettings& settings) {
     const mpi::Communicator comm(MPI_COMM_WORLD);
@@ -85,7 +50,7 @@ int captureOverRanks(const GlobalOptions& global, const CaptureSettings& setting
     } catch (const Error& e) {
         error = e.what();
     }
-    if (const std::string e = agreedError(comm, error); !e.empty()) return fail(e, kBadInput);
+    if (const std::string e = mpi::agreedError(comm, error); !e.empty()) return fail(e, kBadInput);
 
     // Rank 0 alone opens (and locks) the database and decides what a resume keeps.
     std::vector<std::string> columns;
@@ -109,7 +74,7 @@ int captureOverRanks(const GlobalOptions& global, const CaptureSettings& setting
             error = e.what();
         }
     }
-    if (const std::string e = agreedError(comm, error); !e.empty()) return fail(e, kBadInput);
+    if (const std::string e = mpi::agreedError(comm, error); !e.empty()) return fail(e, kBadInput);
     comm.broadcast(todo);
     std::vector<std::size_t> cameras;
     {
@@ -139,33 +104,32 @@ int captureOverRanks(const GlobalOptions& global, const CaptureSettings& setting
         const CameraSample& cam = scene.cameras[cameras[k]];
         bar.update(double(k) / double(cameras.size()));
         double t = MPI_Wtime();
-        mpi::GBufferImage image;
+        BufferPtr local;
         try {
-            image = mpi::GBufferImage::from(*backend->render(cam.camera, request, *ctx));
-            globaliseIds(image, part.primitiveOffset);
+            local = backend->render(cam.camera, request, *ctx);
         } catch (const Error& e) {
             error = e.what();
         }
         traceSeconds += MPI_Wtime() - t;
         // A failure on any rank (this render, or rank 0's last write) stops all.
-        if (const std::string e = agreedError(comm, error); !e.empty()) {
+        if (const std::string e = mpi::agreedError(comm, error); !e.empty()) {
             bar.finish();
             return fail(e, kRuntimeFailure);
         }
-        if (!mpi::compositeByDepth(comm, image, {}, &stats)) continue;
+        const auto image =
+            mpi::compositeCapture(comm, *local, part.primitiveOffset, !dropObjectId, !dropPrimitiveId, &stats);
+        if (!image) continue;
         t = MPI_Wtime();
-        if (dropObjectId) removeChannel(image, "objectId");
-        if (dropPrimitiveId) removeChannel(image, "primitiveId");
         try {
             CinemaParameters params;
             for (const auto& [name, v] : cam.parameters) params.emplace(name, CinemaValue(v));
-            writer->addEntry(params, *image.toBuffer());
+            writer->addEntry(params, *image);
         } catch (const Error& e) {
             error = e.what();
         }
         writeSeconds += MPI_Wtime() - t;
     }
-    if (const std::string e = agreedError(comm, error); !e.empty()) {
+    if (const std::string e = mpi::agreedError(comm, error); !e.empty()) {
         bar.finish();
         return fail(e, kRuntimeFailure);
     }

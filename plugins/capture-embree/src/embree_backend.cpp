@@ -37,6 +37,11 @@ public:
 
     BufferPtr render(const Camera& camera, const CaptureRequest& request, Context& ctx) override {
         if (!bvh_) throw Error("embree capture: render() called before setScene()");
+        return renderGBuffer(*bvh_, camera, request, ctx);
+    }
+
+    static BufferPtr renderTiles(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
+                                 Context& ctx) {
         if (camera.width <= 0 || camera.height <= 0)
             throw Error("embree capture: the camera's resolution is " + std::to_string(camera.width) + "x" +
                         std::to_string(camera.height) + "; expected a positive width and height");
@@ -46,12 +51,12 @@ public:
         auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request));
         buffer->metadata().camera = camera;
         buffer->metadata().attributes["units.Z"] = "world";
-        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        const GBufferWriter writer(bvh.objects(), request, *buffer);
         const PrimaryRays rays(camera);
 
         const int tilesX = (camera.width + kTile - 1) / kTile;
         const int tilesY = (camera.height + kTile - 1) / kTile;
-        RTCScene scene = bvh_->handle();
+        RTCScene scene = bvh.handle();
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
             NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
@@ -71,7 +76,7 @@ public:
         const std::size_t n = checkBatch(rays, "trace");
         auto buffer = ctx.allocate(int(n), 1, GBufferWriter::channels(request));
         buffer->metadata().attributes["units.Z"] = "ray parameter";
-        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        const GBufferWriter writer(bvh_->objects(), request, *buffer);
         RTCScene scene = bvh_->handle();
         const int packets = int((n + 7) / 8);
         ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {
@@ -238,5 +243,9 @@ private:
 }  // namespace
 
 std::unique_ptr<CaptureBackend> createBackend() { return std::make_unique<EmbreeBackend>(); }
+
+BufferPtr renderGBuffer(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request, Context& ctx) {
+    return EmbreeBackend::renderTiles(bvh, camera, request, ctx);
+}
 
 }  // namespace darkroom::embree
