@@ -8,6 +8,7 @@
 #include <bit>
 #include <climits>
 #include <cstring>
+#include <limits>
 
 namespace darkroom::mpi {
 
@@ -69,27 +70,16 @@ void checkLayouts(const Communicator& comm, const GBufferImage& image) {
         throw Error("depth compositing: " + all[0] + " has more than 2^31 values; composite smaller images");
 }
 
-// The pixels [first, first + count) of every channel, as one MPI datatype
-// over absolute addresses (send from MPI_BOTTOM): no packing copy.
-class RangeType {
-public:
-    RangeType(GBufferImage& image, std::size_t first, std::size_t count) {
-        std::vector<MPI_Aint> addresses(image.planes.size());
-        for (std::size_t c = 0; c < image.planes.size(); ++c)
-            check(MPI_Get_address(image.planes[c].data() + first, &addresses[c]), "MPI_Get_address");
-        check(MPI_Type_create_hindexed_block(int(image.planes.size()), int(count), addresses.data(), MPI_UINT32_T,
-                                             &type_),
-              "MPI_Type_create_hindexed_block");
-        check(MPI_Type_commit(&type_), "MPI_Type_commit");
-    }
-    ~RangeType() { MPI_Type_free(&type_); }
-    RangeType(const RangeType&) = delete;
-    RangeType& operator=(const RangeType&) = delete;
-    MPI_Datatype type() const { return type_; }
-
-private:
-    MPI_Datatype type_ = MPI_DATATYPE_NULL;
-};
+// The pixels [first, first + count) of every channel, one channel after the
+// other, in `out`. Packed by hand: OpenMPI moves a contiguous buffer through
+// shared memory an order of magnitude faster than the same bytes described
+// by an indexed datatype over separate planes (measured: bench_depth_compositing,
+// 512 x 512 with 5 channels over 2 ranks, 177 ms with the datatype).
+void pack(const GBufferImage& image, std::size_t first, std::size_t count, std::vector<std::uint32_t>& out) {
+    out.resize(count * image.planes.size());
+    for (std::size_t c = 0; c < image.planes.size(); ++c)
+        std::memcpy(out.data() + c * count, image.planes[c].data() + first, count * 4);
+}
 
 bool binarySwap(const Communicator& comm, GBufferImage& image, int root, CompositeStats& stats) {
     const int P = comm.size(), r = comm.rank();
@@ -98,15 +88,15 @@ bool binarySwap(const Communicator& comm, GBufferImage& image, int root, Composi
     int pow2 = 1;
     while (pow2 * 2 <= P) pow2 *= 2;
     const int extra = P - pow2;
-    std::vector<std::uint32_t> received;
+    std::vector<std::uint32_t> received, sending;
 
     // Fold: ranks 2i+1 (i < extra) hand their whole image to 2i and sit out.
     int v = -1;  // index among the pow2 ranks that swap; -1 = folded away
     if (r < 2 * extra) {
         if (r % 2 == 1) {
             double t = MPI_Wtime();
-            RangeType all(image, 0, n);
-            check(MPI_Send(MPI_BOTTOM, 1, all.type(), r - 1, kFoldTag, c), "MPI_Send");
+            pack(image, 0, n, sending);
+            check(MPI_Send(sending.data(), int(n * nch), MPI_UINT32_T, r - 1, kFoldTag, c), "MPI_Send");
             stats.exchangeSeconds += MPI_Wtime() - t;
             stats.bytesSent += n * nch * 4;
         } else {
@@ -139,9 +129,9 @@ bool binarySwap(const Communicator& comm, GBufferImage& image, int root, Composi
             const std::size_t keep = keepHi - keepLo, give = giveHi - giveLo;
             double t = MPI_Wtime();
             received.resize(keep * nch);
-            RangeType out(image, giveLo, give);
-            check(MPI_Sendrecv(MPI_BOTTOM, 1, out.type(), rankOf(pv), kSwapTag, received.data(), int(keep * nch),
-                               MPI_UINT32_T, rankOf(pv), kSwapTag, c, MPI_STATUS_IGNORE),
+            pack(image, giveLo, give, sending);
+            check(MPI_Sendrecv(sending.data(), int(give * nch), MPI_UINT32_T, rankOf(pv), kSwapTag, received.data(),
+                               int(keep * nch), MPI_UINT32_T, rankOf(pv), kSwapTag, c, MPI_STATUS_IGNORE),
                   "MPI_Sendrecv");
             stats.exchangeSeconds += MPI_Wtime() - t;
             stats.bytesSent += give * nch * 4;
@@ -170,9 +160,9 @@ bool binarySwap(const Communicator& comm, GBufferImage& image, int root, Composi
         }
         received.resize(std::size_t(offset));
     }
-    RangeType piece(image, lo, hi - lo);
-    check(MPI_Gatherv(MPI_BOTTOM, hi > lo ? 1 : 0, piece.type(), received.data(), counts.data(), displacements.data(),
-                      MPI_UINT32_T, root, c),
+    pack(image, lo, hi - lo, sending);
+    check(MPI_Gatherv(sending.data(), int((hi - lo) * nch), MPI_UINT32_T, received.data(), counts.data(),
+                      displacements.data(), MPI_UINT32_T, root, c),
           "MPI_Gatherv");
     if (r != root) stats.bytesSent += (hi - lo) * nch * 4;
     if (r == root) {
@@ -255,29 +245,38 @@ std::size_t mergeNearest(GBufferImage& mine, std::size_t first, std::size_t coun
     const std::uint32_t* oz = other + std::size_t(zc) * count;
     const std::uint32_t* mz = mine.planes[std::size_t(zc)].data() + first;
     const IdChannels ids = idChannels(mine);
-    std::vector<std::uint8_t> take(count);
-    std::size_t taken = 0;
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    // All ones where `other` wins. Branch-free first pass (the hits of two
+    // ranks interleave unpredictably); equal depths, rarer, in a second one.
+    thread_local std::vector<std::uint32_t> take;
+    take.resize(count);
+    std::size_t ties = 0;
     for (std::size_t i = 0; i < count; ++i) {
         const float a = std::bit_cast<float>(oz[i]), b = std::bit_cast<float>(mz[i]);
-        bool t = a < b;
-        if (a == b) {
+        take[i] = 0u - std::uint32_t(a < b);
+        // Background on both sides holds the same miss values: nothing to copy.
+        ties += std::size_t((a == b) & (a != kInf));
+    }
+    if (ties > 0)
+        for (std::size_t i = 0; i < count; ++i) {
+            const float a = std::bit_cast<float>(oz[i]), b = std::bit_cast<float>(mz[i]);
+            if (!(a == b) || a == kInf) continue;
+            bool t = otherIsLower;
             if (ids.present) {
                 const std::uint64_t ka = idKey(other + ids.object * count, other + ids.primitive * count, i);
                 const std::uint64_t kb = idKey(mine.planes[ids.object].data() + first,
                                                mine.planes[ids.primitive].data() + first, i);
                 t = ka < kb || (ka == kb && otherIsLower);
-            } else {
-                t = otherIsLower;
             }
+            take[i] = 0u - std::uint32_t(t);
         }
-        take[i] = t;
-        taken += t;
-    }
+    std::size_t taken = 0;
+    for (std::size_t i = 0; i < count; ++i) taken += take[i] & 1u;
     if (taken == 0) return 0;
     for (std::size_t c = 0; c < mine.planes.size(); ++c) {
         std::uint32_t* dst = mine.planes[c].data() + first;
         const std::uint32_t* src = other + c * count;
-        for (std::size_t i = 0; i < count; ++i) dst[i] = take[i] ? src[i] : dst[i];
+        for (std::size_t i = 0; i < count; ++i) dst[i] = (src[i] & take[i]) | (dst[i] & ~take[i]);
     }
     return taken;
 }
