@@ -213,18 +213,25 @@ const float* Session::roundVertices(StepObject& o, const float* vertices, std::s
     return o.packed.data();
 }
 
+Session::StepObject& Session::declareRound(const std::string& name, Representation representation,
+                                           const float* vertices, std::size_t stride, std::int64_t vertexCount,
+                                           const float* radii, float radius) {
+    StepObject& o = declare(name, representation);
+    try {
+        o.view.vertices = roundVertices(o, vertices, stride, vertexCount, radii, radius);
+    } catch (...) {
+        step_->objects.pop_back();  // a refused call declares nothing
+        throw;
+    }
+    o.view.vertexCount = std::size_t(vertexCount);
+    return o;
+}
+
 void Session::lines(const std::string& name, const float* vertices, std::size_t stride, std::int64_t vertexCount,
                     const std::uint32_t* segments, std::int64_t segmentCount, const float* radii, float radius) {
     checkCount("darkroom_insitu_lines", name, "vertices", vertexCount, vertices);
     checkCount("darkroom_insitu_lines", name, "segments", segmentCount, segments);
-    StepObject& o = declare(name, Representation::Lines);
-    try {
-        o.view.vertices = roundVertices(o, vertices, stride, vertexCount, radii, radius);
-    } catch (...) {
-        step_->objects.pop_back();
-        throw;
-    }
-    o.view.vertexCount = std::size_t(vertexCount);
+    StepObject& o = declareRound(name, Representation::Lines, vertices, stride, vertexCount, radii, radius);
     o.view.indices = segments;
     o.view.primitiveCount = std::size_t(segmentCount);
 }
@@ -232,14 +239,7 @@ void Session::lines(const std::string& name, const float* vertices, std::size_t 
 void Session::points(const std::string& name, const float* vertices, std::size_t stride, std::int64_t vertexCount,
                      const float* radii, float radius) {
     checkCount("darkroom_insitu_points", name, "vertices", vertexCount, vertices);
-    StepObject& o = declare(name, Representation::Points);
-    try {
-        o.view.vertices = roundVertices(o, vertices, stride, vertexCount, radii, radius);
-    } catch (...) {
-        step_->objects.pop_back();
-        throw;
-    }
-    o.view.vertexCount = std::size_t(vertexCount);
+    StepObject& o = declareRound(name, Representation::Points, vertices, stride, vertexCount, radii, radius);
     o.view.primitiveCount = std::size_t(vertexCount);
 }
 

@@ -69,6 +69,9 @@ private:
     struct CameraSpec;
     struct StepObject;
     StepObject& declare(const std::string& name, Representation representation);
+    // Lines and points: declared with their x, y, z, radius records.
+    StepObject& declareRound(const std::string& name, Representation representation, const float* vertices,
+                             std::size_t stride, std::int64_t vertexCount, const float* radii, float radius);
     const float* roundVertices(StepObject& o, const float* vertices, std::size_t stride, std::int64_t count,
                                const float* radii, float radius);
     std::vector<std::pair<std::vector<std::pair<std::string, double>>, Camera>> cameras() const;
