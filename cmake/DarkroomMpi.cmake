@@ -40,7 +40,7 @@ if(DARKROOM_WITH_MPI)
   # FindMPI's C component needs the C language.
   enable_language(C)
   find_package(MPI COMPONENTS ${_mpi_languages})
-  if(NOT MPI_FOUND OR NOT MPIEXEC_EXECUTABLE)
+  if(NOT MPI_FOUND OR NOT EXISTS "${MPIEXEC_EXECUTABLE}")
     _darkroom_missing("Darkroom's MPI parts need MPI (headers, libraries and mpirun): install the Debian packages "
                       "libopenmpi-dev openmpi-bin (apt-get install libopenmpi-dev openmpi-bin, or run "
                       "scripts/install-deps.sh as root); -DDARKROOM_WITH_MPI=OFF builds without MPI")
