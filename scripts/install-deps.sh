@@ -22,6 +22,9 @@ packages=(
   libgl1-mesa-dri fonts-dejavu-core xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # scale-out: MPI (mpirun runs the distributed tests) and the in situ API's
+  # Fortran module (docs/scale-out.md)
+  libopenmpi-dev openmpi-bin gfortran
   # the SDK ABI check (tests/sdk/check_abi.sh)
   abigail-tools
   "$@"

@@ -19,5 +19,12 @@ if [ "${gui_tests:-0}" -eq 0 ]; then
   echo "test.sh: no GUI tests are registered (ctest -L gui lists none)" >&2
   exit 1
 fi
+# Likewise the MPI tests (they run under mpirun -np 4 --oversubscribe).
+mpi_tests=$(ctest -N -L mpi | sed -n 's/^Total Tests: //p')
+if [ "${mpi_tests:-0}" -eq 0 ]; then
+  echo "test.sh: no MPI tests are registered (ctest -L mpi lists none; see the CMake output about MPI)" >&2
+  exit 1
+fi
 ctest --output-on-failure -j "$(nproc)" --timeout 900
 echo "test.sh: the editor was built and its ${gui_tests} GUI tests (ctest -L gui) were part of this run"
+echo "test.sh: ${mpi_tests} MPI tests (ctest -L mpi) were part of this run"

@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "processes.h"
+
 #include <cstdio>
 #include <unistd.h>
 
@@ -25,5 +27,9 @@ Registry& loadRegistry(const GlobalOptions& options) {
 }
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
+
+bool showProgress(const GlobalOptions& options) {
+    return processes().root() && !options.quiet && (options.progress || stderrIsTerminal());
+}
 
 }  // namespace darkroom::cli

@@ -14,6 +14,7 @@ enum ExitCode : int { kOk = 0, kRuntimeFailure = 1, kBadInput = 2 };
 struct GlobalOptions {
     std::vector<std::string> pluginPaths;  // --plugin-path, searched after the defaults
     bool quiet = false;
+    bool progress = false;  // --progress: draw the bar even when stderr is not a terminal
 };
 
 // Prints one line per diagnostic on stderr ("darkroom: <where>: error: <message>").
@@ -26,5 +27,10 @@ Registry& loadRegistry(const GlobalOptions& options);
 
 // True when stderr is a terminal (progress bars only then).
 bool stderrIsTerminal();
+
+// Whether this process draws the progress bar: not with -q; on rank 0 only
+// under mpirun; when stderr is a terminal, or with --progress (an mpirun
+// rank's stderr is a pipe to mpirun even when mpirun's is a terminal).
+bool showProgress(const GlobalOptions& options);
 
 }  // namespace darkroom::cli

@@ -1,6 +1,7 @@
 // darkroom: the headless runner. Lists and describes plugins, validates and
 // runs pipelines, captures scenes into Cinema databases and describes them. Exit codes: 0 success, 1 runtime failure, 2 bad usage or input.
 #include "commands.h"
+#include "processes.h"
 
 #include <darkroom/error.h>
 #include <darkroom/version.h>
@@ -11,6 +12,8 @@
 
 int main(int argc, char** argv) {
     using namespace darkroom::cli;
+    // Under mpirun, every rank runs the same command on its share (docs/scale-out.md).
+    ProcessScope scope(&argc, &argv);
     CLI::App app{"Darkroom: deferred shading of scientific datasets (SDK " DARKROOM_SDK_VERSION ")", "darkroom"};
     app.require_subcommand(1);
     // Global options are accepted after the subcommand too:
@@ -23,6 +26,8 @@ int main(int argc, char** argv) {
                    "DARKROOM_PLUGIN_PATH (repeatable)")
         ->type_name("DIR");
     app.add_flag("-q,--quiet", global.quiet, "No progress output");
+    app.add_flag("--progress", global.progress,
+                 "Draw the progress bar even when stderr is not a terminal (under mpirun, where rank 0 alone draws it)");
 
     Runner run;
     addPluginsCommand(app, global, run);
@@ -51,6 +56,6 @@ int main(int argc, char** argv) {
         return kRuntimeFailure;
     } catch (const std::exception& e) {
         reportError(e.what());
-        return kRuntimeFailure;
+        return failAllProcesses(kRuntimeFailure);
     }
 }

@@ -1,4 +1,6 @@
+#include "capture_over_ranks.h"
 #include "commands.h"
+#include "processes.h"
 #include "progress_bar.h"
 
 #include <darkroom/capture_backend.h>
@@ -49,6 +51,9 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
     cmd->callback([&global, &run, a] {
         run = [&global, a] {
+            if (processes().size > 1)
+                return captureOverRanks(global, {a->scene, a->output, a->compression, a->overwrite, a->resume,
+                                                 a->half, a->threads});
             const Registry& registry = loadRegistry(global);
             SceneDescription scene;
             try {
@@ -95,7 +100,7 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             ro.threads = a->threads;
             ro.registry = &registry;
             std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
-            ProgressBar bar("capture", !global.quiet && stderrIsTerminal());
+            ProgressBar bar("capture", showProgress(global));
             const auto start = std::chrono::steady_clock::now();
             std::size_t rendered = 0, skipped = 0;
             for (std::size_t i = 0; i < scene.cameras.size(); ++i) {

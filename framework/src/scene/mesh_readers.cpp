@@ -14,7 +14,8 @@ std::vector<SceneObject> readMesh(const std::string& path, std::vector<std::stri
     if (ext == ".obj") return readObj(path);
     if (ext == ".vtk") return readVtkLegacy(path);
     if (ext == ".vtp" || ext == ".vtu") return readVtkXml(path, warnings);
-    throw Error(path + ": unknown mesh format '" + ext + "' (expected .ply, .obj, .vtk, .vtp or .vtu)");
+    if (ext == ".pvtp" || ext == ".pvtu") return readParallelVtk(path, warnings);
+    throw Error(path + ": unknown mesh format '" + ext + "' (expected .ply, .obj, .vtk, .vtp, .vtu, .pvtp or .pvtu)");
 }
 
 }  // namespace darkroom

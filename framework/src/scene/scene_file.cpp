@@ -2,12 +2,16 @@
 // darkroom::Error at "scene.yaml:line:column" (1-based); reader and generator
 // errors are prefixed with the object that asked for them.
 #include "object_style.h"
+#include "partition/agreement.h"
+#include "partition/parallel_vtk.h"
+#include "partition/split_objects.h"
 #include "text_cursor.h"
 
 #include <darkroom/error.h>
 #include <darkroom/framework/scene/generators.h>
 #include <darkroom/framework/scene/mesh_readers.h>
 #include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/framework/scene/scene_partition.h>
 #include <darkroom/framework/scene/volume.h>
 
 #include <yaml-cpp/yaml.h>
@@ -24,7 +28,15 @@ namespace {
 
 class Parser {
 public:
-    Parser(std::string source, std::string baseDir) : source_(std::move(source)), baseDir_(std::move(baseDir)) {}
+    // With a group, the scene is loaded over several processes
+    // (scene_partition.h): parallel files are read piece-wise and the bounds
+    // that cameras and default radii depend on are agreed.
+    Parser(std::string source, std::string baseDir, ProcessGroup* group = nullptr)
+        : source_(std::move(source)), baseDir_(std::move(baseDir)), group_(group) {}
+
+    // Per object of the parsed scene: whether it holds only this process's
+    // pieces (a parallel file read over a group) rather than the whole object.
+    const std::vector<bool>& pieceWise() const { return pieceWise_; }
 
     SceneDescription parse(const YAML::Node& root) {
         SceneDescription d;
@@ -180,6 +192,10 @@ private:
                         fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
                                                       " needs 3D cells, and '" + path + "' has none");
                 }
+                if (group_ && partition::isParallelVtk(path)) {
+                    loadedPieceWise_ = true;
+                    return partition::readParallelVtkPieces(path, group_, &warnings);
+                }
                 return readMesh(path, &warnings);
             }
             std::map<std::string, std::string> params;
@@ -221,6 +237,7 @@ private:
         else if (o["file"]) name = std::filesystem::path(text(o["file"], "file")).stem().string();
         else if (o["generator"]) name = text(o["generator"], "generator");
         const std::optional<VolumeRepresentation> volumeRep = volumeRepresentation(o);
+        loadedPieceWise_ = false;
         std::vector<SceneObject> parts = loadParts(o, name, warnings, volumeRep);
 
         Vec3 scale{1, 1, 1}, translate{0, 0, 0};
@@ -274,15 +291,17 @@ private:
                 pointLists.push_back(std::move(p));
             } else {
                 scene.objects.push_back(std::move(p));
+                pieceWise_.push_back(loadedPieceWise_);
             }
         }
     }
 
-    // Point lists get the radius rule of drawn points, on the drawn scene's bounds.
-    static void defaultPointListRadii(const Scene& scene, std::vector<SceneObject>& lists) {
+    // Point lists get the radius rule of drawn points, on the drawn scene's
+    // bounds (agreed over the ranks when the scene is split).
+    void defaultPointListRadii(const Scene& scene, std::vector<SceneObject>& lists) const {
         Scene all;
         all.objects = lists;
-        const double r = scene.objects.empty() ? all.bounds().radius() : scene.bounds().radius();
+        const double r = scene.objects.empty() ? all.bounds().radius() : bounds(scene).radius();
         const float fallback = float(r > 0 ? 0.005 * r : 0.01);
         for (auto& o : lists) {
             bool zero = true;
@@ -293,8 +312,8 @@ private:
 
     // Lines and points read from files carry radius 0: give them 0.5% of the
     // scene's bounding radius unless the scene file set one.
-    static void defaultRadii(Scene& scene) {
-        const double r = scene.bounds().radius();
+    void defaultRadii(Scene& scene) {
+        const double r = bounds(scene).radius();
         const float fallback = float(r > 0 ? 0.005 * r : 0.01);
         for (auto& o : scene.objects) {
             if (o.representation == Representation::Surface) continue;
@@ -350,7 +369,7 @@ private:
         Camera proto;
         proto.width = proto.height = 512;
         proto.fovYDegrees = 30.0;
-        const Bounds b = scene.bounds();
+        const Bounds b = bounds(scene);
         const double radius = b.empty() || b.radius() <= 0 ? 1.0 : b.radius();
         const Vec3 center = b.empty() ? Vec3{} : b.center();
         if (n) {
@@ -438,9 +457,25 @@ private:
         return out;
     }
 
+    // The whole scene's bounds, also when this process holds only part of it.
+    Bounds bounds(const Scene& scene) const {
+        return group_ ? partition::agreeBounds(scene.bounds(), *group_) : scene.bounds();
+    }
+
     std::string source_, baseDir_;
     mutable std::map<std::string, std::shared_ptr<VolumeMesh>> volumes_;
+    ProcessGroup* group_ = nullptr;
+    mutable bool loadedPieceWise_ = false;  // set by loadParts for the object being loaded
+    std::vector<bool> pieceWise_;
 };
+
+YAML::Node loadYaml(const std::string& yamlText, const std::string& sourceName) {
+    try {
+        return YAML::Load(yamlText);
+    } catch (const YAML::Exception& e) {
+        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+    }
+}
 
 }  // namespace
 
@@ -462,6 +497,64 @@ SceneDescription parseSceneFile(const std::string& yamlText, const std::string& 
 SceneDescription loadSceneFile(const std::string& path) {
     const std::string text = mesh::readWholeFile(path);
     return parseSceneFile(text, path, std::filesystem::path(path).parent_path().string());
+}
+
+PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::string& sourceName,
+                                    const std::string& baseDir, ProcessGroup& group) {
+    // Every process parses the same text, so a problem in it is met by all
+    // at the same point; problems met by some processes only (their pieces)
+    // are agreed inside the parser.
+    const YAML::Node root = loadYaml(yamlText, sourceName);
+    Parser parser(sourceName, baseDir, &group);
+    PartitionedScene out;
+    try {
+        out.description = parser.parse(root);
+    } catch (const YAML::Exception& e) {
+        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+    }
+    std::vector<SceneObject>& objects = out.description.scene->objects;
+    const std::size_t n = objects.size();
+    std::vector<std::uint64_t> pieceCounts(n, 0);
+    out.primitiveOffset.assign(n, 0);
+    out.wholePrimitiveCount.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (parser.pieceWise()[i]) {
+            pieceCounts[i] = objects[i].primitiveCount();
+            continue;
+        }
+        // Loaded whole by every process: keep this process's share.
+        const auto [first, last] = partition::shareOf(objects[i], group.rank(), group.size());
+        out.wholePrimitiveCount[i] = objects[i].primitiveCount();
+        out.primitiveOffset[i] = first;
+        objects[i] = partition::shareObject(objects[i], first, last);
+    }
+    // Pieces are read in rank order, so a process's primitives follow those of the lower ranks.
+    std::vector<std::uint64_t> totals;
+    const std::vector<std::uint64_t> before = partition::exclusiveSums(pieceCounts, group, totals);
+    for (std::size_t i = 0; i < n; ++i)
+        if (parser.pieceWise()[i]) {
+            out.primitiveOffset[i] = before[i];
+            out.wholePrimitiveCount[i] = totals[i];
+        }
+    return out;
+}
+
+PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group) {
+    std::string text, error;
+    try {
+        text = mesh::readWholeFile(path);
+    } catch (const Error& e) {
+        error = e.what();
+    }
+    partition::agreeNoError(error, group);
+    return parseSceneFilePart(text, path, std::filesystem::path(path).parent_path().string(), group);
+}
+
+ProcessGroup::~ProcessGroup() = default;
+
+std::pair<std::size_t, std::size_t> blockOf(std::size_t count, int rank, int size) {
+    const auto at = [&](int r) { return std::size_t((unsigned long long)count * unsigned(r) / unsigned(size)); };
+    return {at(rank), at(rank + 1)};
 }
 
 }  // namespace darkroom

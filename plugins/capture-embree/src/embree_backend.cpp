@@ -3,6 +3,7 @@
 #include "embree_scene.h"
 #include "flush_denormals.h"
 #include "gbuffer_writer.h"
+#include "nearest_hit_rule.h"
 #include "primary_rays.h"
 
 #include <darkroom/error.h>
@@ -36,6 +37,11 @@ public:
 
     BufferPtr render(const Camera& camera, const CaptureRequest& request, Context& ctx) override {
         if (!bvh_) throw Error("embree capture: render() called before setScene()");
+        return renderGBuffer(*bvh_, camera, request, ctx);
+    }
+
+    static BufferPtr renderTiles(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
+                                 Context& ctx) {
         if (camera.width <= 0 || camera.height <= 0)
             throw Error("embree capture: the camera's resolution is " + std::to_string(camera.width) + "x" +
                         std::to_string(camera.height) + "; expected a positive width and height");
@@ -45,17 +51,15 @@ public:
         auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request));
         buffer->metadata().camera = camera;
         buffer->metadata().attributes["units.Z"] = "world";
-        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        const GBufferWriter writer(bvh.objects(), request, *buffer);
         const PrimaryRays rays(camera);
 
         const int tilesX = (camera.width + kTile - 1) / kTile;
         const int tilesY = (camera.height + kTile - 1) / kTile;
-        RTCScene scene = bvh_->handle();
+        RTCScene scene = bvh.handle();
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
-            RTCIntersectContext ic;
-            rtcInitIntersectContext(&ic);
-            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
             for (int tile = begin; tile < end; ++tile) {
                 if (ctx.cancelled()) return;
                 traceTile(scene, &ic, rays, writer, camera.width, camera.height, (tile % tilesX) * kTile,
@@ -72,14 +76,12 @@ public:
         const std::size_t n = checkBatch(rays, "trace");
         auto buffer = ctx.allocate(int(n), 1, GBufferWriter::channels(request));
         buffer->metadata().attributes["units.Z"] = "ray parameter";
-        const GBufferWriter writer(bvh_->scene(), request, *buffer);
+        const GBufferWriter writer(bvh_->objects(), request, *buffer);
         RTCScene scene = bvh_->handle();
         const int packets = int((n + 7) / 8);
         ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {
             const FlushDenormals ftz;
-            RTCIntersectContext ic;
-            rtcInitIntersectContext(&ic);
-            ic.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+            NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT);
             alignas(32) RTCRayHit8 rh;
             alignas(32) int valid[8];
             for (int p = begin; p < end; ++p) {
@@ -90,7 +92,8 @@ public:
                     rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
-                rtcIntersect8(valid, scene, &ic, &rh);
+                ic.reset();
+                rtcIntersect8(valid, scene, &ic.context, &rh);
                 for (int k = 0; k < 8; ++k) {
                     if (!valid[k]) continue;
                     const std::size_t i = first + std::size_t(k);
@@ -178,7 +181,7 @@ private:
         }
     }
 
-    static void traceTile(RTCScene scene, RTCIntersectContext* ic, const PrimaryRays& rays,
+    static void traceTile(RTCScene scene, NearestHitContext* ic, const PrimaryRays& rays,
                           const GBufferWriter& writer, int width, int height, int x0, int y0) {
         alignas(32) RTCRayHit8 rh;
         alignas(32) int valid[8];
@@ -206,7 +209,8 @@ private:
                     rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
-                rtcIntersect8(valid, scene, ic, &rh);
+                ic->reset();
+                rtcIntersect8(valid, scene, &ic->context, &rh);
                 for (int k = 0; k < 8; ++k)
                     if (valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
                         writer.prefetch(SurfaceHit{0.0f, rh.hit.geomID[k], rh.hit.primID[k], 0.0f, 0.0f, {}});
@@ -239,5 +243,9 @@ private:
 }  // namespace
 
 std::unique_ptr<CaptureBackend> createBackend() { return std::make_unique<EmbreeBackend>(); }
+
+BufferPtr renderGBuffer(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request, Context& ctx) {
+    return EmbreeBackend::renderTiles(bvh, camera, request, ctx);
+}
 
 }  // namespace darkroom::embree

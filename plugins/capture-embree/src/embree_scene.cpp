@@ -23,8 +23,8 @@ const char* errorName(RTCError e) {
     return "error";
 }
 
-std::string objectName(const SceneObject& o, std::size_t index) {
-    return "object " + std::to_string(index) + (o.name.empty() ? "" : " ('" + o.name + "')");
+std::string objectName(const std::string& name, std::size_t index) {
+    return "object " + std::to_string(index) + (name.empty() ? "" : " ('" + name + "')");
 }
 
 }  // namespace
@@ -51,58 +51,97 @@ std::size_t primitiveCountOf(const SceneObject& o) {
     return 0;
 }
 
+ObjectView viewOf(const SceneObject& o) {
+    ObjectView v;
+    v.name = o.name;
+    v.representation = o.representation;
+    v.vertices = o.vertices.data();
+    v.vertexStride = 16;
+    v.vertexCount = o.vertexCount();
+    v.indices = o.indices.data();
+    v.primitiveCount = primitiveCountOf(o);
+    v.primitiveCell = o.primitiveCell.empty() ? nullptr : o.primitiveCell.data();
+    for (const auto& f : o.fields)
+        v.fields.push_back({f.name, f.values.data(), f.values.size(), f.association == ScalarField::Association::Cell});
+    return v;
+}
+
 void validateObject(const SceneObject& o, std::size_t index) {
     if (o.vertices.size() % 4 != 0)
-        throw Error("capture: " + objectName(o, index) + " has " + std::to_string(o.vertices.size()) +
+        throw Error("capture: " + objectName(o.name, index) + " has " + std::to_string(o.vertices.size()) +
                     " vertex floats; expected 4 (x, y, z, radius) per vertex");
-    const std::size_t nv = o.vertexCount();
+    if (!o.primitiveCell.empty() && o.primitiveCell.size() != primitiveCountOf(o))
+        throw Error("capture: " + objectName(o.name, index) + " maps " + std::to_string(o.primitiveCell.size()) +
+                    " primitives to cells but has " + std::to_string(primitiveCountOf(o)) + " primitives");
+    if (o.representation == Representation::Surface && o.indices.size() % 3 != 0)
+        throw Error("capture: " + objectName(o.name, index) + " has " + std::to_string(o.indices.size()) +
+                    " triangle indices; expected a multiple of 3");
+    validateObject(viewOf(o), index);
+}
+
+void validateObject(const ObjectView& o, std::size_t index) {
+    const std::size_t nv = o.vertexCount;
+    const std::size_t minStride = o.representation == Representation::Surface ? 12 : 16;
+    if (o.vertexStride < minStride || o.vertexStride % 4 != 0)
+        throw Error("capture: " + objectName(o.name, index) + " has vertices " + std::to_string(o.vertexStride) +
+                    " bytes apart; expected a multiple of 4 of at least " + std::to_string(minStride) +
+                    (minStride == 16 ? " (x, y, z, radius)" : " (x, y, z)"));
+    if (nv > 0 && !o.vertices) throw Error("capture: " + objectName(o.name, index) + " has no vertex array");
+    if (o.primitiveCount > 0 && o.representation != Representation::Points && !o.indices)
+        throw Error("capture: " + objectName(o.name, index) + " has no index array");
+    const std::size_t np = o.representation == Representation::Points ? nv : o.primitiveCount;
     switch (o.representation) {
         case Representation::Surface:
-            if (o.indices.size() % 3 != 0)
-                throw Error("capture: " + objectName(o, index) + " has " + std::to_string(o.indices.size()) +
-                            " triangle indices; expected a multiple of 3");
-            for (std::size_t i = 0; i < o.indices.size(); ++i)
+            for (std::size_t i = 0; i < 3 * np; ++i)
                 if (o.indices[i] >= nv)
-                    throw Error("capture: " + objectName(o, index) + ": triangle " + std::to_string(i / 3) +
+                    throw Error("capture: " + objectName(o.name, index) + ": triangle " + std::to_string(i / 3) +
                                 " uses vertex " + std::to_string(o.indices[i]) + " but there are only " +
                                 std::to_string(nv) + " vertices");
             break;
         case Representation::Lines:
-            for (std::size_t i = 0; i < o.indices.size(); ++i)
+            for (std::size_t i = 0; i < np; ++i)
                 if (std::size_t(o.indices[i]) + 1 >= nv)
-                    throw Error("capture: " + objectName(o, index) + ": line segment " + std::to_string(i) +
+                    throw Error("capture: " + objectName(o.name, index) + ": line segment " + std::to_string(i) +
                                 " starts at vertex " + std::to_string(o.indices[i]) +
                                 " and needs the next one, but there are only " + std::to_string(nv) +
                                 " vertices");
             break;
         case Representation::Points: break;
     }
-    const std::size_t np = primitiveCountOf(o);
-    if (!o.primitiveCell.empty() && o.primitiveCell.size() != np)
-        throw Error("capture: " + objectName(o, index) + " maps " + std::to_string(o.primitiveCell.size()) +
-                    " primitives to cells but has " + std::to_string(np) + " primitives");
     std::size_t cells = np;
-    if (!o.primitiveCell.empty()) {
+    if (o.primitiveCell) {
         cells = 0;
-        for (auto c : o.primitiveCell) cells = std::max<std::size_t>(cells, std::size_t(c) + 1);
+        for (std::size_t i = 0; i < np; ++i) cells = std::max<std::size_t>(cells, std::size_t(o.primitiveCell[i]) + 1);
     }
     for (const auto& f : o.fields) {
-        const bool point = f.association == ScalarField::Association::Point;
-        if (point && f.values.size() != nv)
-            throw Error("capture: " + objectName(o, index) + ": point field '" + f.name + "' has " +
-                        std::to_string(f.values.size()) + " values; expected one per vertex (" +
-                        std::to_string(nv) + ")");
-        if (!point && f.values.size() < cells)
-            throw Error("capture: " + objectName(o, index) + ": cell field '" + f.name + "' has " +
-                        std::to_string(f.values.size()) + " values; expected at least " +
-                        std::to_string(cells) + " (one per cell)");
+        if (!f.cell && f.count != nv)
+            throw Error("capture: " + objectName(o.name, index) + ": point field '" + f.name + "' has " +
+                        std::to_string(f.count) + " values; expected one per vertex (" + std::to_string(nv) + ")");
+        if (f.cell && f.count < cells)
+            throw Error("capture: " + objectName(o.name, index) + ": cell field '" + f.name + "' has " +
+                        std::to_string(f.count) + " values; expected at least " + std::to_string(cells) +
+                        " (one per cell)");
+        if (f.count > 0 && !f.values)
+            throw Error("capture: " + objectName(o.name, index) + ": field '" + f.name + "' has no values");
     }
 }
 
 SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene)
-    : device_(std::move(device)), source_(scene ? std::move(scene) : std::make_shared<const Scene>()) {
-    for (std::size_t i = 0; i < source_->objects.size(); ++i) validateObject(source_->objects[i], i);
+    : device_(std::move(device)) {
+    if (!scene) scene = std::make_shared<const Scene>();
+    for (std::size_t i = 0; i < scene->objects.size(); ++i) validateObject(scene->objects[i], i);
+    for (const auto& o : scene->objects) objects_.push_back(viewOf(o));
+    owner_ = std::move(scene);
+    create();
+}
 
+SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner)
+    : device_(std::move(device)), objects_(std::move(objects)), owner_(std::move(owner)) {
+    for (std::size_t i = 0; i < objects_.size(); ++i) validateObject(objects_[i], i);
+    create();
+}
+
+void SceneBvh::create() {
     RTCDevice dev = device_->handle();
     scene_ = rtcNewScene(dev);
     device_->check("cannot create a scene");
@@ -112,54 +151,58 @@ SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> 
     // triangles sharing an edge and hit the far side (1-3 crack pixels per
     // 768^2 view of the demo isosurface; tests/test_watertight.cpp). Costs
     // about 7 % of capture time (bench_capture, load 8-9 on 2 cores).
-    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    // Ties in depth go to the lowest ids (nearest_hit_rule.h), through the
+    // intersection context's filter.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
 
     try {
         build();
     } catch (...) {
         rtcReleaseScene(scene_);
+        scene_ = nullptr;
         throw;
     }
 }
 
 void SceneBvh::build() {
     RTCDevice dev = device_->handle();
-    for (std::size_t i = 0; i < source_->objects.size(); ++i) {
-        const SceneObject& o = source_->objects[i];
-        if (primitiveCountOf(o) == 0) continue;
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+        const ObjectView& o = objects_[i];
+        if (o.primitiveCount == 0 || o.vertexCount == 0) continue;
         RTCGeometry g = nullptr;
-        // Vertices are x, y, z, radius records of 16 bytes: Embree reads them
-        // in place as FLOAT3 (triangles) or FLOAT4 (curves and spheres). The
-        // last record is a full 16 bytes, which is the padding Embree's SSE
-        // loads need for shared vertex buffers.
+        // Vertices are x, y, z(, radius) records: Embree reads them in place
+        // as FLOAT3 (triangles) or FLOAT4 (curves and spheres). Scene objects
+        // use 16-byte records, so the last one is the padding Embree's SSE
+        // loads need; 12-byte records (in situ triangles) must be followed
+        // by 4 readable bytes, which darkroom/insitu.h asks of its callers.
         switch (o.representation) {
             case Representation::Surface:
                 g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, o.vertices.data(), 0,
-                                           16, o.vertexCount());
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, o.indices.data(), 0,
-                                           12, o.indices.size() / 3);
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, o.vertices, 0,
+                                           o.vertexStride, o.vertexCount);
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, o.indices, 0, 12,
+                                           o.primitiveCount);
                 break;
             case Representation::Lines:
                 // Round curves: cones capped by spheres, i.e. true tubes
                 // rather than flat ribbons or tessellated cylinders.
                 g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices.data(), 0,
-                                           16, o.vertexCount());
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, o.indices.data(), 0, 4,
-                                           o.indices.size());
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0,
+                                           o.vertexStride, o.vertexCount);
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, o.indices, 0, 4,
+                                           o.primitiveCount);
                 break;
             case Representation::Points:
                 g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices.data(), 0,
-                                           16, o.vertexCount());
+                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0,
+                                           o.vertexStride, o.vertexCount);
                 break;
         }
-        device_->check("cannot set up " + objectName(o, i));
+        device_->check("cannot set up " + objectName(o.name, i));
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene_, g, unsigned(i));
         rtcReleaseGeometry(g);
-        device_->check("cannot add " + objectName(o, i));
+        device_->check("cannot add " + objectName(o.name, i));
     }
     rtcCommitScene(scene_);
     device_->check("cannot build the acceleration structure");

@@ -4,8 +4,10 @@
 // other files and the benchmark can hold one without including Embree.
 #include <darkroom/scene.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
@@ -28,26 +30,69 @@ private:
     RTCDeviceTy* device_ = nullptr;
 };
 
-// The acceleration structure of one scene. Geometry ID i is scene object i.
-// Vertex and index arrays are shared with Embree, not copied, so the scene is
-// kept alive here for as long as the BVH exists.
+// One field of an object as the G-buffer writer reads it.
+struct FieldView {
+    std::string name;
+    const float* values = nullptr;
+    std::size_t count = 0;
+    bool cell = false;
+};
+
+// One object as the ray tracer and the G-buffer writer read it: arrays that
+// belong to someone else (a darkroom::Scene, or a simulation's own memory
+// handed over through the in situ API), shared with Embree, never copied.
+struct ObjectView {
+    std::string name;
+    Representation representation = Representation::Surface;
+    // x, y, z at the start of each record; lines and points keep their
+    // radius at offset 12 (Embree's FLOAT4), so their stride is at least 16.
+    const float* vertices = nullptr;
+    std::size_t vertexStride = 16;  // bytes
+    std::size_t vertexCount = 0;
+    // Surface: 3 per triangle; lines: the first vertex of each segment; points: none.
+    const std::uint32_t* indices = nullptr;
+    std::size_t primitiveCount = 0;
+    // Primitive -> cell for cell fields; nullptr: primitive i is cell i.
+    const std::uint32_t* primitiveCell = nullptr;
+    std::vector<FieldView> fields;
+
+    const FieldView* field(const std::string& n) const {
+        for (const auto& f : fields)
+            if (f.name == n) return &f;
+        return nullptr;
+    }
+    // Vertex i's x, y, z (and radius).
+    const float* vertex(std::size_t i) const {
+        return reinterpret_cast<const float*>(reinterpret_cast<const char*>(vertices) + i * vertexStride);
+    }
+};
+
+ObjectView viewOf(const SceneObject& object);
+
+// The acceleration structure of one scene. Geometry ID i is object i.
+// Vertex and index arrays are shared with Embree, not copied, so their owner
+// is kept alive here for as long as the BVH exists.
 class SceneBvh {
 public:
     // Validates every object (indices in range, field sizes) and throws
     // darkroom::Error naming the object on bad input, since Embree itself
     // would read out of bounds.
     SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene);
+    // Objects over arrays `owner` keeps alive (nullptr: the caller does).
+    SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner);
     ~SceneBvh();
     SceneBvh(const SceneBvh&) = delete;
     SceneBvh& operator=(const SceneBvh&) = delete;
 
     RTCSceneTy* handle() const { return scene_; }
-    const Scene& scene() const { return *source_; }
+    const std::vector<ObjectView>& objects() const { return objects_; }
 
 private:
+    void create();
     void build();
     std::shared_ptr<Device> device_;
-    std::shared_ptr<const Scene> source_;
+    std::vector<ObjectView> objects_;
+    std::shared_ptr<const void> owner_;
     RTCSceneTy* scene_ = nullptr;
 };
 
@@ -58,5 +103,6 @@ std::size_t primitiveCountOf(const SceneObject& object);
 
 // Throws darkroom::Error if an object cannot be handed to the ray tracer.
 void validateObject(const SceneObject& object, std::size_t index);
+void validateObject(const ObjectView& object, std::size_t index);
 
 }  // namespace darkroom::embree

@@ -29,18 +29,18 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
     return out;
 }
 
-GBufferWriter::GBufferWriter(const Scene& scene, const CaptureRequest& request, WritableBuffer& buffer) {
-    for (const auto& o : scene.objects)
-        objects_.push_back({o.representation, o.vertices.data(), o.indices.data(),
-                            o.primitiveCell.empty() ? nullptr : o.primitiveCell.data()});
+GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request,
+                             WritableBuffer& buffer) {
+    for (const auto& o : objects)
+        objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell});
     z_ = buffer.writeFloat("Z");
     for (const auto& name : request.scalars) {
         scalars_.push_back(buffer.writeFloat(name));
-        for (const auto& o : scene.objects) {
+        for (const auto& o : objects) {
             FieldRef ref;
-            if (const ScalarField* f = o.field(name)) {
-                ref.values = f->values.data();
-                ref.cell = f->association == ScalarField::Association::Cell;
+            if (const FieldView* f = o.field(name)) {
+                ref.values = f->values;
+                ref.cell = f->cell;
             }
             fields_.push_back(ref);
         }

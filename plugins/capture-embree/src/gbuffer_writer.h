@@ -2,6 +2,8 @@
 // Turns ray hits into G-buffer pixels: planar depth, interpolated scalars,
 // camera-facing normals and ids. Independent of the ray tracer, so the rules
 // (what is NaN, how fields are interpolated) live in one place.
+#include "embree_scene.h"
+
 #include <darkroom/buffer.h>
 #include <darkroom/capture_backend.h>
 #include <darkroom/scene.h>
@@ -34,7 +36,7 @@ public:
     static std::vector<ChannelDesc> channels(const CaptureRequest& request);
 
     // `buffer` must have been allocated with channels(request).
-    GBufferWriter(const Scene& scene, const CaptureRequest& request, WritableBuffer& buffer);
+    GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request, WritableBuffer& buffer);
 
     // Starts loading what hit() will read for this primitive, so that the
     // cache misses of the 8 lanes of a packet overlap instead of queueing.
@@ -43,7 +45,7 @@ public:
         if (scalars_.empty() && o.representation != Representation::Points) return;  // nothing to read
         if (o.representation == Representation::Surface) __builtin_prefetch(o.indices + 3 * std::size_t(h.primID));
         else if (o.representation == Representation::Lines) __builtin_prefetch(o.indices + h.primID);
-        else __builtin_prefetch(o.vertices + 4 * std::size_t(h.primID));
+        else __builtin_prefetch(o.vertex(h.primID));
     }
 
     void miss(std::size_t pixel) const {
@@ -82,8 +84,12 @@ private:
     struct ObjectRef {
         Representation representation;
         const float* vertices;  // x, y, z, radius records
+        std::size_t stride;     // bytes between records
         const std::uint32_t* indices;
         const std::uint32_t* primitiveCell;  // nullptr: primitive i is cell i
+        const float* vertex(unsigned i) const {
+            return reinterpret_cast<const float*>(reinterpret_cast<const char*>(vertices) + i * stride);
+        }
     };
     struct FieldRef {
         const float* values = nullptr;  // nullptr: the object lacks this field
@@ -101,7 +107,7 @@ private:
         double t = h.t;
         const double ox = org[0], oy = org[1], oz = org[2], dx = dir[0], dy = dir[1], dz = dir[2];
         {
-            const float* c = o.vertices + 4 * std::size_t(h.primID);
+            const float* c = o.vertex(h.primID);
             const double px = ox - c[0], py = oy - c[1], pz = oz - c[2], r = c[3];
             const double qa = dx * dx + dy * dy + dz * dz, qb = px * dx + py * dy + pz * dz;
             const double disc = qb * qb - qa * (px * px + py * py + pz * pz - r * r);

@@ -19,7 +19,7 @@
 
 namespace darkroom {
 
-// Dispatches on the extension: .ply, .obj, .vtk, .vtp, .vtu (case-insensitive).
+// Dispatches on the extension: .ply, .obj, .vtk, .vtp, .vtu, .pvtp, .pvtu (case-insensitive).
 // `warnings`, when given, receives notes about skipped content (e.g. 3D cells).
 DARKROOM_API std::vector<SceneObject> readMesh(const std::string& path,
                                                std::vector<std::string>* warnings = nullptr);
@@ -29,5 +29,11 @@ DARKROOM_API std::vector<SceneObject> readObj(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readVtkLegacy(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readVtkXml(const std::string& path,
                                                  std::vector<std::string>* warnings = nullptr);
+// A parallel VTK XML file (.pvtp, or .pvtu of 2D cells): every piece it names,
+// read with readVtkXml, each part appended to the part of the same
+// representation in piece order (so primitive ids run piece after piece).
+// See scene_partition.h for reading only some pieces on each of several processes.
+DARKROOM_API std::vector<SceneObject> readParallelVtk(const std::string& path,
+                                                      std::vector<std::string>* warnings = nullptr);
 
 }  // namespace darkroom

@@ -1,0 +1,138 @@
+// `mpirun -np N darkroom capture` equals `darkroom capture` byte for byte:
+// data.csv and every product, with ids, normals and fields, on a scene whose
+// parts are read piece-wise (.pvtp) or split (generators and a whole file),
+// and whose coincident spheres tie in depth across ranks: "dots" (pieces,
+// split by piece) and "dots_whole" (the same points in one file, split by
+// count) put the same sphere on different ranks, and the lower object id
+// must win wherever it lies.
+#include "run_process.h"
+#include "test_support.h"
+#include "vtk_test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace darkroom::test {
+namespace {
+
+const char* kScene =
+    "objects:\n"
+    "  - file: field.pvtp\n"
+    "  - file: field.pvtp\n"
+    "    name: dots\n"
+    "    representation: points\n"
+    "    radius: 0.05\n"
+    "  - generator: streamlines\n"
+    "    parameters: {count: 16}\n"
+    "  - generator: particles\n"
+    "    parameters: {count: 800}\n"
+    "  - file: field_all.vtp\n"
+    "    name: dots_whole\n"
+    "    representation: points\n"
+    "    radius: 0.05\n"
+    "cameras:\n"
+    "  resolution: [48, 40]\n"
+    "  grid: {phi: [0, 120], theta: [0, 60]}\n"
+    "channels:\n"
+    "  scalars: [height, band, time, value]\n"
+    "  normals: true\n"
+    "  objectId: true\n"
+    "  primitiveId: true\n";
+
+// The pieces as one file: points and cells appended, data arrays too.
+VtpPiece merged(const std::vector<VtpPiece>& pieces) {
+    VtpPiece all;
+    all.pointData = {{"height", {}}};
+    all.cellData = {{"band", {}}};
+    for (const auto& p : pieces) {
+        const auto base = std::uint32_t(all.points.size() / 3);
+        all.points.insert(all.points.end(), p.points.begin(), p.points.end());
+        auto shift = [base](std::vector<std::uint32_t> c) {
+            for (auto& i : c) i += base;
+            return c;
+        };
+        for (const auto& c : p.verts) all.verts.push_back(shift(c));
+        for (const auto& c : p.lines) all.lines.push_back(shift(c));
+        for (const auto& c : p.polys) all.polys.push_back(shift(c));
+        auto& h = all.pointData[0].second;
+        h.insert(h.end(), p.pointData[0].second.begin(), p.pointData[0].second.end());
+    }
+    // Cell data runs verts, lines, polys over the whole file.
+    using Cells = std::vector<std::vector<std::uint32_t>> VtpPiece::*;
+    for (const Cells kind : {&VtpPiece::verts, &VtpPiece::lines, &VtpPiece::polys})
+        for (std::size_t k = 0; k < pieces.size(); ++k)
+            all.cellData[0].second.insert(all.cellData[0].second.end(), (pieces[k].*kind).size(), float(k));
+    return all;
+}
+
+struct Scene {
+    TempDir dir;
+    std::string path;
+    explicit Scene(const std::string& yaml = kScene) {
+        const auto pieces = heightFieldPieces(17, 21, 5);
+        writePvtp(dir.path(), "field", pieces);
+        writeVtp(dir.file("field_all.vtp"), merged(pieces));
+        path = dir.file("scene.yaml");
+        writeText(path, yaml);
+    }
+};
+
+void expectSameCapture(int ranks, const std::string& yaml) {
+    Scene s(yaml);
+    const RunResult one = runAlone({"capture", s.path, "-o", s.dir.file("one.cdb"), "-q"});
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    const RunResult many = runOnRanks(ranks, {"capture", s.path, "-o", s.dir.file("many.cdb"), "-q"});
+    ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
+    EXPECT_EQ(compareFolders(s.dir.file("one.cdb"), s.dir.file("many.cdb")), "");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(s.dir.file("one.cdb")), {}), 5);  // data.csv + 4
+}
+
+TEST(CaptureOverRanks, FourRanksWriteTheSingleProcessDatabaseByteForByte) { expectSameCapture(4, kScene); }
+
+TEST(CaptureOverRanks, ThreeRanksFoldIntoBinarySwapAndStillMatch) { expectSameCapture(3, kScene); }
+
+TEST(CaptureOverRanks, WithoutIdChannelsTheHiddenIdsStillDecideTies) {
+    std::string yaml = kScene;
+    yaml.replace(yaml.find("  objectId: true\n  primitiveId: true\n"), 36, "  objectId: false\n  primitiveId: false\n");
+    expectSameCapture(4, yaml);
+}
+
+TEST(CaptureOverRanks, AResumedCaptureRendersOnlyWhatIsMissing) {
+    Scene s;
+    const std::string db = s.dir.file("db.cdb");
+    ASSERT_EQ(runOnRanks(4, {"capture", s.path, "-o", db, "-q"}).exitCode, 0);
+    const std::string reference = s.dir.file("reference.cdb");
+    std::filesystem::copy(db, reference);
+    std::filesystem::remove(db + "/phi=120_theta=60.exr");
+    const RunResult resumed = runOnRanks(4, {"capture", s.path, "-o", db, "--resume"});
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("1 entries rendered over 4 ranks, 3 kept from the interrupted capture"),
+              std::string::npos)
+        << resumed.err;
+    EXPECT_EQ(compareFolders(db, reference), "");
+}
+
+TEST(CaptureOverRanks, AnExistingDatabaseIsRefusedOnceWithAClearMessage) {
+    Scene s;
+    const std::string db = s.dir.file("db.cdb");
+    ASSERT_EQ(runOnRanks(2, {"capture", s.path, "-o", db, "-q"}).exitCode, 0);
+    const RunResult again = runOnRanks(4, {"capture", s.path, "-o", db});
+    EXPECT_EQ(again.exitCode, 2);
+    const std::string message = "already exists and is not empty; use --overwrite";
+    const auto first = again.err.find(message);
+    ASSERT_NE(first, std::string::npos) << again.err;
+    EXPECT_EQ(again.err.find(message, first + 1), std::string::npos) << "reported more than once:\n" << again.err;
+}
+
+TEST(CaptureOverRanks, ABadSceneFailsOnEveryRankWithOneMessage) {
+    Scene s("objects:\n  - file: field.pvtp\n    representation: wireframe\n");
+    const RunResult r = runOnRanks(4, {"capture", s.path, "-o", s.dir.file("db.cdb")});
+    EXPECT_EQ(r.exitCode, 2);
+    const auto first = r.err.find("representation must be surface, lines or points");
+    ASSERT_NE(first, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("representation must be", first + 1), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace darkroom::test
