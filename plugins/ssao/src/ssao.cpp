@@ -2,12 +2,14 @@
 
 #include "ao_estimators.h"
 #include "bilateral_blur.h"
-#include "pixel_geometry.h"
+#include "frame.h"
 
 #include <darkroom/error.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace darkroom {
 
@@ -50,19 +52,36 @@ void Ssao::execute(Context& ctx) {
         return;
     }
 
-    const PixelGeometry g = buildPixelGeometry(*in, camera, ctx.get(useNormals_), ctx);
+    const int blurRadius = int(ctx.get(blurRadius_));
+    const Frame g = buildFrame(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
     ctx.progress(0.1);
-    if (ctx.get(method_) == Method::Hemisphere)
-        hemisphereAO(g, s, ctx, ao);
-    else
-        horizonAO(g, s, ctx, ao);
+    // Raw AO into a padded plane (the blur reads past the borders); the
+    // padding reads as unoccluded.
+    auto raw = g.makePlane(1.0f);
+    const bool hemisphere = ctx.get(method_) == Method::Hemisphere;
+    ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+        if (hemisphere)
+            hemisphereAO(g, s, y0, y1, raw.get());
+        else
+            horizonAO(g, s, y0, y1, raw.get());
+    });
     ctx.progress(0.8);
-    bilateralBlur(g, s, int(ctx.get(blurRadius_)), ctx, ao);
+    if (blurRadius > 0) {
+        const std::vector<float> spatial = blurWeights(blurRadius);
+        auto tmp = g.makePlane(1.0f);
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, false, y0, y1, raw.get(), tmp.get()); });
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, true, y0, y1, tmp.get(), raw.get()); });
+    }
     ctx.parallelFor(0, h, 64, [&](int y0, int y1) {
-        for (std::size_t i = std::size_t(y0) * std::size_t(w); i < std::size_t(y1) * std::size_t(w); ++i) {
-            float a = std::clamp(1.0f - intensity * (1.0f - ao[i]), 0.0f, 1.0f);
-            if (power != 1.0f) a = std::pow(a, power);
-            ao[i] = g.valid[i] && std::isfinite(a) ? a : 1.0f;
+        for (int y = y0; y < y1; ++y) {
+            const float* src = raw.get() + g.offset(0, y);
+            const float* z = g.z.get() + g.offset(0, y);
+            float* dst = ao + std::size_t(y) * std::size_t(w);
+            for (int x = 0; x < w; ++x) {
+                float a = std::clamp(1.0f - intensity * (1.0f - src[x]), 0.0f, 1.0f);
+                if (power != 1.0f) a = std::pow(a, power);
+                dst[x] = z[x] < std::numeric_limits<float>::infinity() && std::isfinite(a) ? a : 1.0f;
+            }
         }
     });
     ctx.progress(1.0);
