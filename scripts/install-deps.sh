@@ -19,6 +19,8 @@ packages=(
   libgl1-mesa-dri fonts-dejavu-core xvfb xauth
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # SIMD kernels (plugins/ssao)
+  libhwy-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)
   abigail-tools
   "$@"
