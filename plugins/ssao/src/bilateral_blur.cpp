@@ -28,7 +28,7 @@ void BlurRow(const Frame& g, const AoSettings& s, const float* spatial, int radi
     const bool persp = g.perspective();
     const std::size_t row = g.offset(0, y);
     const std::ptrdiff_t step = vertical ? std::ptrdiff_t(g.stride) : 1;
-    const float* z = g.z.get();
+    const float* z = g.z;
     const VF zero = hn::Zero(d), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const VF ax = hn::Set(d, g.ax), bx = hn::Set(d, g.bx);
@@ -47,7 +47,7 @@ void BlurRow(const Frame& g, const AoSettings& s, const float* spatial, int radi
         const VF zs = hn::IfThenElse(valid, zc, one);
         const VF cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
         const VF sx = hn::MulAdd(cx, ax, bx);
-        const V3 nrm{hn::Load(d, g.n[0].get() + i), hn::Load(d, g.n[1].get() + i), hn::Load(d, g.n[2].get() + i)};
+        const V3 nrm{hn::Load(d, g.n[0] + i), hn::Load(d, g.n[1] + i), hn::Load(d, g.n[2] + i)};
         // Distance of a neighbour q from the centre's tangent plane:
         // n . (q - p). Perspective: q = (sx_q z_q, sy_q z_q, z_q).
         const VF planeP = Dot(nrm, persp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs});

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 HWY_BEFORE_NAMESPACE();
 namespace darkroom::ssao::HWY_NAMESPACE {
@@ -22,8 +24,8 @@ void SanitizeRow(const Frame& g, const float* zin, int y, bool wantInverse) {
     const DF d;
     const int N = int(hn::Lanes(d));
     const float inf = std::numeric_limits<float>::infinity();
-    float* z = g.z.get() + std::size_t(y + g.padY) * std::size_t(g.stride);
-    float* f = wantInverse ? g.f.get() + std::size_t(y + g.padY) * std::size_t(g.stride) : nullptr;
+    float* z = g.z + std::size_t(y + g.padY) * std::size_t(g.stride);
+    float* f = wantInverse ? g.f + std::size_t(y + g.padY) * std::size_t(g.stride) : nullptr;
     if (y < 0 || y >= g.height() || !zin) {
         std::fill(z, z + g.stride, inf);
         if (f) std::fill(f, f + g.stride, -inf);
@@ -79,7 +81,7 @@ void NormalRow(const Frame& g, int y, const float* const world[3], const float* 
     const int N = int(hn::Lanes(d));
     const std::size_t row = g.offset(0, y);
     const std::size_t up = row - std::size_t(g.stride), down = row + std::size_t(g.stride);
-    const float* z = g.z.get();
+    const float* z = g.z;
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const VF syC = hn::Set(d, g.ay * (float(y) + 0.5f) + g.by);
     const VF syU = hn::Set(d, g.ay * (float(y) - 0.5f) + g.by);
@@ -88,7 +90,7 @@ void NormalRow(const Frame& g, int y, const float* const world[3], const float* 
     for (int x = 0; x < g.width(); x += N) {
         const VF zc = hn::Load(d, z + row + x);
         const MF valid = hn::Lt(zc, inf);
-        float* out[3] = {g.n[0].get() + row + x, g.n[1].get() + row + x, g.n[2].get() + row + x};
+        float* out[3] = {g.n[0] + row + x, g.n[1] + row + x, g.n[2] + row + x};
         if (hn::AllFalse(d, valid)) {
             for (auto* o : out) hn::Store(hn::Zero(d), d, o);
             continue;
@@ -155,18 +157,30 @@ Frame::Frame(const Camera& camera, int width, int height, int border) : ViewGeom
     pixelScale = 2.0f * halfHeight() / float(height);
 }
 
-hwy::AlignedFreeUniquePtr<float[]> Frame::makePlane(float fill) const {
-    auto p = hwy::AllocateAligned<float>(planeSize());
-    std::fill(p.get(), p.get() + planeSize(), fill);
-    return p;
+std::shared_ptr<WritableBuffer> Frame::allocatePlanes(Context& ctx, int count) const {
+    std::vector<ChannelDesc> channels;
+    for (int i = 0; i < count; ++i) channels.push_back({"plane" + std::to_string(i), ChannelType::Float32});
+    return ctx.allocate(stride, height() + 2 * padY, std::move(channels), Fill::None);
+}
+
+void Frame::fillPadding(float* plane, int y0, int y1, float value) const {
+    for (int y = y0; y < y1; ++y) {
+        float* row = plane + std::size_t(y + padY) * std::size_t(stride);
+        if (y < 0 || y >= height()) {
+            std::fill(row, row + stride, value);
+        } else {
+            std::fill(row, row + padX, value);
+            std::fill(row + padX + width(), row + stride, value);
+        }
+    }
 }
 
 Frame buildFrame(const Buffer& in, const Camera& camera, bool useNormals, int border, Context& ctx) {
     Frame g(camera, in.width(), in.height(), border);
-    const std::size_t size = g.planeSize();
-    g.z = hwy::AllocateAligned<float>(size);
-    g.f = hwy::AllocateAligned<float>(size);
-    for (auto& p : g.n) p = hwy::AllocateAligned<float>(size);
+    g.storage = g.allocatePlanes(ctx, 5);
+    g.z = g.storage->writeFloat("plane0");
+    g.f = g.storage->writeFloat("plane1");
+    for (int c = 0; c < 3; ++c) g.n[c] = g.storage->writeFloat("plane" + std::to_string(c + 2));
     const float* z = in.requireFloat("Z");
     const int rows = g.height() + 2 * g.padY;
     ctx.parallelFor(0, rows, 32, [&](int r0, int r1) {
@@ -176,7 +190,7 @@ Frame buildFrame(const Buffer& in, const Camera& camera, bool useNormals, int bo
             HWY_DYNAMIC_DISPATCH(SanitizeRow)(g, inside ? z + std::size_t(y) * std::size_t(g.width()) : nullptr, y,
                                               true);
             if (!inside)
-                for (auto& p : g.n) std::fill(p.get() + std::size_t(r) * g.stride, p.get() + std::size_t(r + 1) * g.stride, 0.0f);
+                for (float* p : g.n) std::fill(p + std::size_t(r) * g.stride, p + std::size_t(r + 1) * g.stride, 0.0f);
         }
     });
 
@@ -196,7 +210,7 @@ Frame buildFrame(const Buffer& in, const Camera& camera, bool useNormals, int bo
     ctx.parallelFor(0, g.height(), 16, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             float* rowStart[3];
-            for (int c = 0; c < 3; ++c) rowStart[c] = g.n[c].get() + std::size_t(y + g.padY) * g.stride;
+            for (int c = 0; c < 3; ++c) rowStart[c] = g.n[c] + std::size_t(y + g.padY) * g.stride;
             for (auto* p : rowStart) std::fill(p, p + g.padX, 0.0f);
             HWY_DYNAMIC_DISPATCH(NormalRow)(g, y, haveNormals ? world : nullptr, toView);
             const int end = g.padX + (g.width() + 15) / 16 * 16;

@@ -10,21 +10,21 @@
 #include <darkroom/context.h>
 #include <darkroom/view_geometry.h>
 
-#include <hwy/aligned_allocator.h>
-
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 namespace darkroom::ssao {
 
 // Every plane holds (height + 2 padY) rows of `stride` floats; pixel (x, y)
 // is at offset(x, y). Padding and the tail of each row beyond the width read
-// as "no surface". Rows start 64-byte aligned.
+// as "no surface". Rows start 64-byte aligned. The planes come from the
+// host's pool (Context::allocate), so repeated runs reuse their memory.
 struct Frame : ViewGeometry {
     int padX = 0, padY = 0, stride = 0;
-    hwy::AlignedFreeUniquePtr<float[]> z;     // planar depth; +inf where there is no surface
-    hwy::AlignedFreeUniquePtr<float[]> f;     // 1/z (perspective) or z (orthographic); -inf where no surface
-    hwy::AlignedFreeUniquePtr<float[]> n[3];  // unit view-space normal facing the camera; 0 where no surface
+    float* z = nullptr;            // planar depth; +inf where there is no surface
+    float* f = nullptr;            // 1/z (perspective) or z (orthographic); -inf where no surface
+    float* n[3] = {nullptr, nullptr, nullptr};  // unit view-space normal facing the camera; 0 where no surface
 
     // Constants of the image-plane mapping: view-plane x = sx(px) = ax px + bx
     // at unit depth (perspective) or in world units (orthographic), likewise y.
@@ -37,8 +37,15 @@ struct Frame : ViewGeometry {
         return std::size_t(y + padY) * std::size_t(stride) + std::size_t(x + padX);
     }
     std::size_t planeSize() const { return std::size_t(height() + 2 * padY) * std::size_t(stride); }
-    // A plane of this frame's layout, every value `fill`.
-    hwy::AlignedFreeUniquePtr<float[]> makePlane(float fill) const;
+
+    // `count` planes of this layout from the host's pool, uninitialised; they
+    // live as long as the returned buffer.
+    std::shared_ptr<WritableBuffer> allocatePlanes(Context& ctx, int count) const;
+    // Sets the padding of rows [y0, y1) of `plane` (left of x = 0 and right of
+    // the width) to `value`; rows outside [0, height) are filled whole.
+    void fillPadding(float* plane, int y0, int y1, float value) const;
+
+    std::shared_ptr<WritableBuffer> storage;  // z, f and the normals
 };
 
 // Builds the depth planes and normals. Normals come from the input's

@@ -60,15 +60,15 @@ void HemisphereRow(const Frame& g, const AoSettings& s, int y, float* ao) {
     }
     for (int x = 0; x < g.width(); x += N) {
         float* out = ao + row + std::size_t(x);
-        const VF zc = hn::Load(d, g.z.get() + row + x);
+        const VF zc = hn::Load(d, g.z + row + x);
         const MF valid = hn::Lt(zc, inf);
         if (hn::AllFalse(d, valid)) {
             hn::Store(one, d, out);
             continue;
         }
         const VF zs = hn::IfThenElse(valid, zc, one);
-        const V3 nrm{hn::Load(d, g.n[0].get() + row + x), hn::Load(d, g.n[1].get() + row + x),
-                     hn::Load(d, g.n[2].get() + row + x)};
+        const V3 nrm{hn::Load(d, g.n[0] + row + x), hn::Load(d, g.n[1] + row + x),
+                     hn::Load(d, g.n[2] + row + x)};
         const VF cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
         const VF sx = hn::MulAdd(cx, hn::Set(d, g.ax), hn::Set(d, g.bx));
         const V3 p = persp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs};
@@ -118,7 +118,7 @@ void HemisphereRow(const Frame& g, const AoSettings& s, int y, float* ao) {
             const VI idx = hn::IfThenElseZero(
                 hn::RebindMask(di, inside),
                 hn::Add(hn::Add(hn::Mul(hn::ConvertTo(di, py), vStride), hn::ConvertTo(di, px)), vBase));
-            const VF occZ = hn::GatherIndex(d, g.z.get(), idx);
+            const VF occZ = hn::GatherIndex(d, g.z, idx);
             // Background (+inf) never occludes; the sample must lie behind the surface.
             MF occluded = hn::And(inside, hn::Gt(q.z, occZ));
             if (points)

@@ -10,11 +10,13 @@
 // from V. Weighting by |n_p| makes the slice average the exact cosine-weighted
 // integral (1 for an unoccluded surface of any orientation).
 //
-// SIMD over the pixels of a row (one lane per pixel, Highway). Per sample the
-// only transcendental work is one square root and two divisions: the slice
-// directions are rotations of one sine/cosine pair, the normal's angle enters
-// through its sine and cosine only, and a(h) is expanded with double-angle
-// identities so that each side needs one acos.
+// SIMD over the pixels of a row (one lane per pixel, Highway). A sample costs
+// four gathered depths and about sixty vector operations, with no square
+// root or division unless it falls in the falloff band: samples interpolate
+// 1/z and are compared in a space scaled by it, and the running horizon is
+// kept as a fraction of c|c|. Per slice, the directions are rotations of one
+// sine/cosine pair, the normal's angle enters through its sine and cosine
+// only, and a(h) is expanded with double-angle identities (one acos a side).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "horizon_ao.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -33,110 +35,180 @@
 HWY_BEFORE_NAMESPACE();
 namespace darkroom::ssao::HWY_NAMESPACE {
 
-struct SliceTable {
-    std::vector<float> cos, sin;  // rotation from the first slice to slice k
+// Per-pixel quantities of the receivers in one vector.
+struct Receiver {
+    VF fx, fy;        // pixel centre minus half a pixel (the bilinear lattice's origin)
+    V3 p, v, origin;  // position, unit vector to the camera, origin lifted along the normal
+    VF R, coreR, invFalloffR, stepScale, stepOffset;
+    // Points geometry, perspective: an occluder's 1/z must lie in
+    // (pointsMinF, pointsMaxF], i.e. z in [p.z - thickness, p.z).
+    // Orthographic: z in [p.z - thickness, p.z).
+    VF pointsMinF, pointsMaxF, thick;
+};
+
+// Constants of the sample loop, hoisted out of it.
+struct Lattice {
+    const float* f;
+    const float* z;
+    float stride;
+    int base;         // plane offset of pixel (0, 0)
+    bool smallPlane;  // every offset below 2^23
+    bool canInterp;   // at least 2 x 2 pixels
+    float maxX0, maxY0, edge, ax, bx, ay, by, halfAx, halfAy;
+
+    explicit Lattice(const Frame& g)
+        : f(g.f), z(g.z), stride(float(g.stride)), base(int(g.offset(0, 0))),
+          smallPlane(g.planeSize() < (std::size_t(1) << 23)), canInterp(g.width() >= 2 && g.height() >= 2),
+          maxX0(float(g.width() - 2)), maxY0(float(g.height() - 2)), edge(4.0f * g.pixelScale), ax(g.ax), bx(g.bx),
+          ay(g.ay), by(g.by), halfAx(g.bx + 0.5f * g.ax), halfAy(g.by + 0.5f * g.ay) {}
+
+    // Plane offsets of pixels (x, y), given as integer-valued floats.
+    HWY_INLINE VI Index(DF d, VF x, VF y) const {
+        const DI di;
+        if (smallPlane) {
+            // Exact below 2^23: the integer is in the mantissa of at + 2^23.
+            const VF at = hn::MulAdd(y, hn::Set(d, stride), hn::Add(x, hn::Set(d, float(base) + 8388608.0f)));
+            return hn::Sub(hn::BitCast(di, at), hn::Set(di, 0x4b000000));
+        }
+        return hn::Add(hn::Add(hn::Mul(hn::ConvertTo(di, y), hn::Set(di, int(stride))), hn::ConvertTo(di, x)),
+                       hn::Set(di, base));
+    }
 };
 
 // The horizon of one side of one slice: the highest cosine (from V) of the
 // occluders met within the radius, starting from lowCos (the normal's
-// hemisphere edge), blended towards lowCos by the falloff weight.
-struct Receiver {
-    VF cx, cy;           // pixel centre
-    V3 p, v, origin;     // position, unit vector to the camera, lifted origin
-    VF R, invFalloffR, thick, stepScale, stepOffset;
-};
-
-HWY_INLINE VF SideHorizon(DF d, const Frame& g, const AoSettings& s, const Receiver& r, MF live, VF dirX, VF dirY,
+// hemisphere edge), blended towards lowCos by the falloff weight. The march
+// stops at distance tExit (pixels), where the screen line leaves the image.
+//
+// The running maximum is kept as a fraction num/den of the monotone c|c|,
+// so an occluder within (1 - falloff) R, whose weight is 1, is compared as
+// dot|dot| * den > num * |d|^2 without a square root or a division; only the
+// occluders in the falloff band need the distance itself.
+template <bool kPersp, bool kPoints, bool kFalloff>
+HWY_INLINE VF SideHorizon(DF d, const Lattice& L, int steps, const Receiver& r, MF live, VF dirX, VF dirY, VF tExit,
                           V3 axis, VF lowCos) {
-    const DI di;
-    const bool persp = g.perspective(), points = s.geometry == Geometry::Points;
-    const bool canInterp = g.width() >= 2 && g.height() >= 2;
-    const float* f = g.f.get();
-    const float* z = g.z.get();
-    const int base = int(g.offset(0, 0));
-    const VI vStride = hn::Set(di, g.stride), vBase = hn::Set(di, base);
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const VF W = hn::Set(d, float(g.width())), H = hn::Set(d, float(g.height()));
-    const VF maxX0 = hn::Set(d, float(g.width() - 2)), maxY0 = hn::Set(d, float(g.height() - 2));
-    const VF edge = hn::Set(d, 4.0f * g.pixelScale);
-    const VF ax = hn::Set(d, g.ax), bx = hn::Set(d, g.bx), ay = hn::Set(d, g.ay), by = hn::Set(d, g.by);
+    const VF maxX0 = hn::Set(d, L.maxX0), maxY0 = hn::Set(d, L.maxY0), edge = hn::Set(d, L.edge);
+    const VF ax = hn::Set(d, L.ax), ay = hn::Set(d, L.ay), halfAx = hn::Set(d, L.halfAx), halfAy = hn::Set(d, L.halfAy);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
-    VF best = lowCos;
-    for (int j = 0; j < s.steps; ++j) {
+    const float* f = L.f;
+    const std::size_t below = std::size_t(L.stride);
+    VF num = hn::Mul(lowCos, hn::Abs(lowCos)), den = one;
+    for (int j = 0; j < steps; ++j) {
         const VF dist = hn::Max(one, hn::MulAdd(hn::Set(d, float(j)), r.stepScale, r.stepOffset));
-        const VF sx = hn::MulAdd(dirX, dist, r.cx), sy = hn::MulAdd(dirY, dist, r.cy);
         // Leaving the image ends the march (the screen line does not come back).
-        live = hn::And(live, hn::And(hn::And(hn::Ge(sx, zero), hn::Ge(sy, zero)), hn::And(hn::Lt(sx, W), hn::Lt(sy, H))));
+        live = hn::And(live, hn::Lt(dist, tExit));
         if (hn::AllFalse(d, live)) break;
-        const auto liveI = hn::RebindMask(di, live);
+        // The sample in pixel coordinates minus half a pixel.
+        const VF fx = hn::MulAdd(dirX, dist, r.fx), fy = hn::MulAdd(dirY, dist, r.fy);
 
         // Depth interpolated in 1/z (perspective) or z between the four
         // surrounding pixel centres, exact on a plane; the nearest pixel where
         // they straddle an edge (spread beyond 4 pixel sizes) or one is empty.
-        VF zq = zero, qx = sx, qy = sy;
+        // fq: the sample's 1/z (perspective) or z; (qx, qy) its image-plane
+        // position (at unit depth in perspective).
+        VF fq = zero;
+        VF qx = hn::MulAdd(fx, ax, halfAx), qy = hn::MulAdd(fy, ay, halfAy);
         MF interp = hn::FirstN(d, 0);
-        if (canInterp) {
-            const VF fx = hn::Sub(sx, half), fy = hn::Sub(sy, half);
+        if (L.canInterp) {
+            // Clamped, so the outer half pixel at the borders is extrapolated
+            // from the two outermost rows/columns (still exact for a plane);
+            // the clamp also keeps every lane's reads inside the plane.
             const VF x0 = hn::Min(hn::Max(hn::Floor(fx), zero), maxX0);
             const VF y0 = hn::Min(hn::Max(hn::Floor(fy), zero), maxY0);
             const VF tx = hn::Sub(fx, x0), ty = hn::Sub(fy, y0);
-            const VI idx = hn::IfThenElseZero(
-                liveI, hn::Add(hn::Add(hn::Mul(hn::ConvertTo(di, y0), vStride), hn::ConvertTo(di, x0)), vBase));
+            const VI idx = L.Index(d, x0, y0);
             const VF f00 = hn::GatherIndex(d, f, idx), f10 = hn::GatherIndex(d, f + 1, idx);
-            const VF f01 = hn::GatherIndex(d, f + g.stride, idx), f11 = hn::GatherIndex(d, f + g.stride + 1, idx);
+            const VF f01 = hn::GatherIndex(d, f + below, idx), f11 = hn::GatherIndex(d, f + below + 1, idx);
             const VF lo = hn::Min(hn::Min(f00, f10), hn::Min(f01, f11));
             const VF hi = hn::Max(hn::Max(f00, f10), hn::Max(f01, f11));
             // Perspective: z spread <= 4 pixel sizes at the nearest z, i.e.
             // (1/z) spread <= 4 * pixelScale * min(1/z). An empty corner
             // (-inf) fails either test.
-            interp = hn::Le(hn::Sub(hi, lo), persp ? hn::Mul(edge, lo) : edge);
+            interp = hn::Le(hn::Sub(hi, lo), kPersp ? hn::Mul(edge, lo) : edge);
             const VF top = hn::MulAdd(hn::Sub(f10, f00), tx, f00);
             const VF bottom = hn::MulAdd(hn::Sub(f11, f01), tx, f01);
-            const VF fv = hn::MulAdd(hn::Sub(bottom, top), ty, top);
-            zq = persp ? hn::Div(one, fv) : fv;
+            fq = hn::MulAdd(hn::Sub(bottom, top), ty, top);
         }
         MF hit = live;
         const MF nearest = hn::AndNot(interp, live);
-        if (!hn::AllFalse(d, nearest)) {
-            const VF nx = hn::Floor(sx), ny = hn::Floor(sy);
-            const VI idx = hn::IfThenElseZero(
-                liveI, hn::Add(hn::Add(hn::Mul(hn::ConvertTo(di, ny), vStride), hn::ConvertTo(di, nx)), vBase));
-            const VF zn = hn::GatherIndex(d, z, idx);
-            zq = hn::IfThenElse(nearest, zn, zq);
-            qx = hn::IfThenElse(nearest, hn::Add(nx, half), qx);
-            qy = hn::IfThenElse(nearest, hn::Add(ny, half), qy);
+        const bool anyNearest = !hn::AllFalse(d, nearest);
+        if (anyNearest) {
+            // fx + 0.5 >= 0 for marching lanes; the others read pixel 0.
+            const VF nx = hn::Floor(hn::Add(fx, half)), ny = hn::Floor(hn::Add(fy, half));
+            const VI idx = hn::IfThenElseZero(hn::RebindMask(DI(), nearest), L.Index(d, nx, ny));
+            const VF zn = hn::GatherIndex(d, L.z, idx);
+            fq = hn::IfThenElse(nearest, kPersp ? hn::Div(one, zn) : zn, fq);
+            qx = hn::IfThenElse(nearest, hn::MulAdd(nx, ax, halfAx), qx);
+            qy = hn::IfThenElse(nearest, hn::MulAdd(ny, ay, halfAy), qy);
             // Background never occludes.
             hit = hn::AndNot(hn::AndNot(hn::Lt(zn, inf), nearest), hit);
         }
-        const VF qsx = hn::MulAdd(qx, ax, bx), qsy = hn::MulAdd(qy, ay, by);
-        const V3 sp = persp ? V3{hn::Mul(qsx, zq), hn::Mul(qsy, zq), zq} : V3{qsx, qsy, zq};
-        if (points) hit = hn::And(hit, hn::And(hn::Lt(sp.z, r.p.z), hn::Le(hn::Sub(r.p.z, sp.z), r.thick)));
-        // Measured within the slice (a no-op for interpolated samples, which
-        // lie on it; nearest-pixel ones may not).
-        V3 dd = Sub(sp, r.origin);
-        dd = SubScaled(dd, axis, Dot(dd, axis));
+        if (kPoints)
+            hit = kPersp ? hn::And(hit, hn::And(hn::Gt(fq, r.pointsMinF), hn::Le(fq, r.pointsMaxF)))
+                         : hn::And(hit, hn::And(hn::Lt(fq, r.p.z), hn::Le(hn::Sub(r.p.z, fq), r.thick)));
+        // The sample minus the origin; in perspective scaled by the sample's
+        // 1/z, which leaves the horizon cosine unchanged and saves a division:
+        // (1/z) (q - o) = (qx - o.x / z, qy - o.y / z, 1 - o.z / z).
+        V3 dd = kPersp ? V3{hn::NegMulAdd(r.origin.x, fq, qx), hn::NegMulAdd(r.origin.y, fq, qy),
+                            hn::NegMulAdd(r.origin.z, fq, one)}
+                       : V3{hn::Sub(qx, r.origin.x), hn::Sub(qy, r.origin.y), hn::Sub(fq, r.origin.z)};
+        // Nearest-pixel samples need not lie in the slice: measured within
+        // it. Interpolated ones lie on the slice's screen line, so in it.
+        if (anyNearest) dd = Select(nearest, SubScaled(dd, axis, Dot(dd, axis)), dd);
         const VF len2 = Dot(dd, dd);
-        hit = hn::And(hit, hn::Gt(len2, zero));
-        if (hn::AllFalse(d, hit)) continue;
-        const VF len = hn::Sqrt(len2);
-        const VF w = s.falloff > 0 ? hn::Min(hn::Max(hn::Mul(hn::Sub(r.R, len), r.invFalloffR), zero), one)
-                                   : hn::IfThenElseZero(hn::Le(len, r.R), one);
-        const VF cosH = hn::Div(Dot(dd, r.v), len);
-        const VF candidate = hn::MulAdd(hn::Sub(cosH, lowCos), w, lowCos);
-        best = hn::IfThenElse(hit, hn::Max(best, candidate), best);
+        const VF dotV = Dot(dd, r.v);
+        // Radii in dd's units: R (orthographic) or R / z (perspective).
+        const VF coreR = kPersp ? hn::Mul(r.coreR, fq) : r.coreR;
+        // Full weight within the core (for a hard cut the radius, inclusive).
+        // A zero-length |d| compares 0 > 0 and never wins.
+        const MF full = hn::And(hit, kFalloff ? hn::Lt(len2, hn::Mul(coreR, coreR)) : hn::Le(len2, hn::Mul(coreR, coreR)));
+        const VF candNum = hn::Mul(dotV, hn::Abs(dotV));
+        const MF better = hn::And(full, hn::Gt(hn::Mul(candNum, den), hn::Mul(num, len2)));
+        num = hn::IfThenElse(better, candNum, num);
+        den = hn::IfThenElse(better, len2, den);
+        if (kFalloff) {
+            const VF radius = kPersp ? hn::Mul(r.R, fq) : r.R;
+            const MF band = hn::AndNot(full, hn::And(hit, hn::Lt(len2, hn::Mul(radius, radius))));
+            if (!hn::AllFalse(d, band)) {
+                // Weight clamp((R - |q - o|) / (falloff R)), with |q - o| =
+                // len z in perspective: 1/len and z both from 1/(len / z).
+                const VF len = hn::Sqrt(len2);
+                VF cosH, distance;
+                if (kPersp) {
+                    const VF inv = hn::Div(one, hn::Mul(len, fq));
+                    cosH = hn::Mul(hn::Mul(dotV, fq), inv);
+                    distance = hn::Mul(len2, inv);
+                } else {
+                    cosH = hn::Div(dotV, len);
+                    distance = len;
+                }
+                const VF w = hn::Min(hn::Max(hn::Mul(hn::Sub(r.R, distance), r.invFalloffR), zero), one);
+                const VF c = hn::MulAdd(hn::Sub(cosH, lowCos), w, lowCos);
+                const VF cNum = hn::Mul(c, hn::Abs(c));
+                const MF wins = hn::And(band, hn::Gt(hn::Mul(cNum, den), num));
+                num = hn::IfThenElse(wins, cNum, num);
+                den = hn::IfThenElse(wins, one, den);
+            }
+        }
     }
+    // c|c| = num / den.
+    const VF mag = hn::Sqrt(hn::Div(hn::Abs(num), den));
+    const VF best = hn::IfThenElse(hn::Lt(num, zero), hn::Neg(mag), mag);
     return hn::Min(hn::Max(best, hn::Set(d, -1.0f)), one);
 }
 
-void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
+template <bool kPersp, bool kPoints, bool kFalloff>
+void HorizonRowT(const Frame& g, const AoSettings& s, int y, float* ao) {
     const DF d;
     const DI di;
     const int N = int(hn::Lanes(d));
     constexpr float kPi = 3.14159265358979323846f;
-    const bool persp = g.perspective();
+    const Lattice L(g);
     const std::size_t row = g.offset(0, y);
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const VF W = hn::Set(d, float(g.width())), H = hn::Set(d, float(g.height()));
     const VF cy = hn::Set(d, float(y) + 0.5f);
     const VF sy = hn::Set(d, g.ay * (float(y) + 0.5f) + g.by);
     const std::uint32_t rowHash = mix32(std::uint32_t(y) + 0x632be5abU);
@@ -151,7 +223,7 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
     const VF quarter = hn::Set(d, 0.25f), two = hn::Set(d, 2.0f);
     for (int x = 0; x < g.width(); x += N) {
         float* out = ao + row + std::size_t(x);
-        const VF zc = hn::Load(d, g.z.get() + row + x);
+        const VF zc = hn::Load(d, g.z + row + x);
         const MF valid = hn::Lt(zc, inf);
         if (hn::AllFalse(d, valid)) {
             hn::Store(one, d, out);
@@ -159,30 +231,39 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
         }
         Receiver r;
         const VF zs = hn::IfThenElse(valid, zc, one);
-        const V3 nrm{hn::Load(d, g.n[0].get() + row + x), hn::Load(d, g.n[1].get() + row + x),
-                     hn::Load(d, g.n[2].get() + row + x)};
-        r.cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
-        r.cy = cy;
-        const VF sx = hn::MulAdd(r.cx, hn::Set(d, g.ax), hn::Set(d, g.bx));
-        r.p = persp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs};
-        r.v = persp ? Normalize(d, Scale(r.p, hn::Set(d, -1.0f))) : Splat(d, 0, 0, -1);
-        const VF pixelSize = persp ? hn::Mul(hn::Set(d, g.pixelScale), zs) : hn::Set(d, g.pixelScale);
+        const V3 nrm{hn::Load(d, g.n[0] + row + x), hn::Load(d, g.n[1] + row + x),
+                     hn::Load(d, g.n[2] + row + x)};
+        const VF cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
+        r.fx = hn::Sub(cx, half);
+        r.fy = hn::Sub(cy, half);
+        const VF sx = hn::MulAdd(cx, hn::Set(d, g.ax), hn::Set(d, g.bx));
+        r.p = kPersp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs};
+        r.v = kPersp ? Normalize(d, Scale(r.p, hn::Set(d, -1.0f))) : Splat(d, 0, 0, -1);
+        const VF pixelSize = kPersp ? hn::Mul(hn::Set(d, g.pixelScale), zs) : hn::Set(d, g.pixelScale);
         r.R = s.radiusInImageHeight ? hn::Mul(hn::Set(d, s.radius * float(g.height())), pixelSize)
                                     : hn::Set(d, s.radius);
         const VF radiusPixels = hn::Div(r.R, pixelSize);
-        // Nothing is resolvable within a pixel.
-        const MF active = hn::And(valid, hn::Ge(radiusPixels, one));
+        // Nothing is resolvable within a pixel; a radius beyond 1e30 pixels
+        // puts every sample outside the image (and would overflow below).
+        const MF active =
+            hn::And(valid, hn::And(hn::Ge(radiusPixels, one), hn::Lt(radiusPixels, hn::Set(d, 1e30f))));
         if (hn::AllFalse(d, active)) {
             hn::Store(one, d, out);
             continue;
         }
         r.origin = AddScaled(r.p, nrm, hn::Mul(hn::Set(d, s.bias), r.R));
         r.thick = hn::Mul(hn::Set(d, s.thickness), r.R);
-        r.invFalloffR = s.falloff > 0 ? hn::Div(one, hn::Mul(hn::Set(d, s.falloff), r.R)) : zero;
+        if (kPoints && kPersp) {
+            r.pointsMinF = hn::Div(one, zs);
+            const VF back = hn::Sub(zs, r.thick);
+            r.pointsMaxF = hn::IfThenElse(hn::Gt(back, zero), hn::Div(one, back), inf);
+        }
+        r.coreR = kFalloff ? hn::Mul(hn::Set(d, 1.0f - s.falloff), r.R) : r.R;
+        r.invFalloffR = kFalloff ? hn::Div(one, hn::Mul(hn::Set(d, s.falloff), r.R)) : zero;
         const VF sliceNoise = PixelNoise(d, x, rowHash, stream0);
         const VF stepNoise = PixelNoise(d, x, rowHash, stream1);
         // Sample j at max(1, (j + stepNoise) / steps * radiusPixels) pixels.
-        r.stepScale = hn::Div(radiusPixels, hn::Set(d, float(s.steps)));
+        r.stepScale = hn::IfThenElseZero(active, hn::Div(radiusPixels, hn::Set(d, float(s.steps))));
         r.stepOffset = hn::Mul(stepNoise, r.stepScale);
 
         // Basis of the plane perpendicular to V.
@@ -193,6 +274,8 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
         // camera the two differ, and uniform screen angles bias AO by a few %.
         const VF phi0 = hn::Mul(sliceNoise, hn::Set(d, kPi / float(s.slices)));
         const VF cos0 = hn::Cos(d, phi0), sin0 = hn::Sin(d, phi0);
+        // Distances to the image borders from the pixel centre.
+        const VF toRight = hn::Sub(W, cx), toBottom = hn::Sub(H, cy);
         VF visibility = zero;
         for (int k = 0; k < s.slices; ++k) {
             const VF rc = hn::Set(d, rotCos[std::size_t(k)]), rs = hn::Set(d, rotSin[std::size_t(k)]);
@@ -202,7 +285,7 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
             // The slice plane holds the camera ray, so it projects to a screen
             // line through the pixel, along d(X/Z, Y/Z).
             VF c = orthoDir.x, sn = orthoDir.y;
-            if (persp) {
+            if (kPersp) {
                 c = hn::NegMulAdd(orthoDir.z, sx, c);
                 sn = hn::NegMulAdd(orthoDir.z, sy, sn);
             }
@@ -211,11 +294,21 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
             const VF invLen = hn::Div(one, screenLen);
             c = hn::Mul(c, invLen);
             sn = hn::Mul(sn, invLen);
-            const V3 axis = Normalize(d, Cross(orthoDir, r.v));
+            // The slice's normal: V and orthoDir are orthonormal.
+            const V3 axis = Cross(orthoDir, r.v);
             const V3 projN = SubScaled(nrm, axis, Dot(nrm, axis));
             const VF projLen = hn::Sqrt(Dot(projN, projN));
             ok = hn::And(ok, hn::Gt(projLen, hn::Set(d, 1e-6f)));
             if (hn::AllFalse(d, ok)) continue;
+            // Where each side's screen line leaves the image: the + side moves
+            // along (c, -sn), the - side along (-c, sn). A zero component
+            // gives an infinite reciprocal, signed as the zero was.
+            const VF invC = hn::Div(one, c), invS = hn::Div(one, sn);
+            const VF a = hn::Mul(toRight, invC), b = hn::Mul(cx, invC);
+            const VF cc = hn::Mul(toBottom, invS), dy = hn::Mul(cy, invS);
+            const MF posC = hn::Gt(invC, zero), posS = hn::Gt(invS, zero);
+            const VF exitPlus = hn::Min(hn::IfThenElse(posC, a, hn::Neg(b)), hn::IfThenElse(posS, dy, hn::Neg(cc)));
+            const VF exitMinus = hn::Min(hn::IfThenElse(posC, b, hn::Neg(a)), hn::IfThenElse(posS, cc, hn::Neg(dy)));
             // The normal's signed angle g in the slice, through its cosine and
             // sine (|g| <= pi/2: the normal faces the camera).
             const VF invP = hn::Div(one, projLen);
@@ -223,8 +316,10 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
             const VF sinG = hn::Mul(Dot(projN, orthoDir), invP);
             // Lowest horizons: the edges of the normal's hemisphere,
             // cos(g + pi/2) on the + side and cos(g - pi/2) on the - side.
-            const VF c2 = SideHorizon(d, g, s, r, ok, c, hn::Neg(sn), axis, hn::Neg(sinG));
-            const VF c1 = SideHorizon(d, g, s, r, ok, hn::Neg(c), sn, axis, sinG);
+            const VF c2 = SideHorizon<kPersp, kPoints, kFalloff>(d, L, s.steps, r, ok, c, hn::Neg(sn), exitPlus, axis,
+                                                                 hn::Neg(sinG));
+            const VF c1 = SideHorizon<kPersp, kPoints, kFalloff>(d, L, s.steps, r, ok, hn::Neg(c), sn, exitMinus, axis,
+                                                                 sinG);
             // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
             // within pi/2 of g because the march starts at the hemisphere edge.
             // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
@@ -240,6 +335,21 @@ void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
         }
         const VF result = hn::Min(hn::Max(hn::Mul(visibility, invSlices), zero), one);
         hn::Store(hn::IfThenElse(active, result, one), d, out);
+    }
+}
+
+void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
+    const bool points = s.geometry == Geometry::Points, falloff = s.falloff > 0;
+    if (g.perspective()) {
+        if (points)
+            falloff ? HorizonRowT<true, true, true>(g, s, y, ao) : HorizonRowT<true, true, false>(g, s, y, ao);
+        else
+            falloff ? HorizonRowT<true, false, true>(g, s, y, ao) : HorizonRowT<true, false, false>(g, s, y, ao);
+    } else {
+        if (points)
+            falloff ? HorizonRowT<false, true, true>(g, s, y, ao) : HorizonRowT<false, true, false>(g, s, y, ao);
+        else
+            falloff ? HorizonRowT<false, false, true>(g, s, y, ao) : HorizonRowT<false, false, false>(g, s, y, ao);
     }
 }
 

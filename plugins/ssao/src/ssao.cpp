@@ -2,6 +2,7 @@
 
 #include "ao_estimators.h"
 #include "bilateral_blur.h"
+#include "finish.h"
 #include "frame.h"
 
 #include <darkroom/error.h>
@@ -27,7 +28,7 @@ void Ssao::execute(Context& ctx) {
             ? !(camera.fovYDegrees > 0 && camera.fovYDegrees < 180)
             : !(camera.viewHeight > 0))
         throw Error("the image's camera has an invalid field of view or view height");
-    const int w = in->width(), h = in->height();
+    const int h = in->height();
 
     AoSettings s;
     s.radius = float(ctx.get(radius_));
@@ -55,35 +56,33 @@ void Ssao::execute(Context& ctx) {
     const int blurRadius = int(ctx.get(blurRadius_));
     const Frame g = buildFrame(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
     ctx.progress(0.1);
-    // Raw AO into a padded plane (the blur reads past the borders); the
-    // padding reads as unoccluded.
-    auto raw = g.makePlane(1.0f);
+    // Raw AO (and the blur's intermediate) in padded planes, whose padding
+    // reads as unoccluded: the blur reads past the borders.
+    const auto scratch = g.allocatePlanes(ctx, blurRadius > 0 ? 2 : 1);
+    float* raw = scratch->writeFloat("plane0");
+    float* tmp = blurRadius > 0 ? scratch->writeFloat("plane1") : nullptr;
+    g.fillPadding(raw, -g.padY, 0, 1.0f);
+    g.fillPadding(raw, h, h + g.padY, 1.0f);
+    if (tmp) {
+        g.fillPadding(tmp, -g.padY, 0, 1.0f);
+        g.fillPadding(tmp, h, h + g.padY, 1.0f);
+    }
     const bool hemisphere = ctx.get(method_) == Method::Hemisphere;
     ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+        g.fillPadding(raw, y0, y1, 1.0f);
+        if (tmp) g.fillPadding(tmp, y0, y1, 1.0f);
         if (hemisphere)
-            hemisphereAO(g, s, y0, y1, raw.get());
+            hemisphereAO(g, s, y0, y1, raw);
         else
-            horizonAO(g, s, y0, y1, raw.get());
+            horizonAO(g, s, y0, y1, raw);
     });
     ctx.progress(0.8);
     if (blurRadius > 0) {
         const std::vector<float> spatial = blurWeights(blurRadius);
-        auto tmp = g.makePlane(1.0f);
-        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, false, y0, y1, raw.get(), tmp.get()); });
-        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, true, y0, y1, tmp.get(), raw.get()); });
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, false, y0, y1, raw, tmp); });
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, true, y0, y1, tmp, raw); });
     }
-    ctx.parallelFor(0, h, 64, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            const float* src = raw.get() + g.offset(0, y);
-            const float* z = g.z.get() + g.offset(0, y);
-            float* dst = ao + std::size_t(y) * std::size_t(w);
-            for (int x = 0; x < w; ++x) {
-                float a = std::clamp(1.0f - intensity * (1.0f - src[x]), 0.0f, 1.0f);
-                if (power != 1.0f) a = std::pow(a, power);
-                dst[x] = z[x] < std::numeric_limits<float>::infinity() && std::isfinite(a) ? a : 1.0f;
-            }
-        }
-    });
+    ctx.parallelFor(0, h, 64, [&](int y0, int y1) { finishRows(g, raw, intensity, power, y0, y1, ao); });
     ctx.progress(1.0);
     ctx.set(result_, out);
 }
