@@ -75,32 +75,47 @@ struct Lattice {
     }
 };
 
-// The horizon of one side of one slice: the highest cosine (from V) of the
-// occluders met within the radius, starting from lowCos (the normal's
-// hemisphere edge), blended towards lowCos by the falloff weight. The march
-// stops at distance tExit (pixels), where the screen line leaves the image.
+// The march along one side of one slice, towards its horizon: the highest
+// cosine (from V) of the occluders met within the radius, starting from
+// lowCos (the normal's hemisphere edge), blended towards lowCos by the
+// falloff weight. The march stops at distance tExit (pixels), where the
+// screen line leaves the image.
 //
 // The running maximum is kept as a fraction num/den of the monotone c|c|,
 // so an occluder within (1 - falloff) R, whose weight is 1, is compared as
 // dot|dot| * den > num * |d|^2 without a square root or a division; only the
 // occluders in the falloff band need the distance itself.
+struct March {
+    MF live;
+    VF dirX, dirY, tExit, lowCos, num, den;
+};
+
+HWY_INLINE March StartMarch(DF d, MF live, VF dirX, VF dirY, VF tExit, VF lowCos) {
+    return {live, dirX, dirY, tExit, lowCos, hn::Mul(lowCos, hn::Abs(lowCos)), hn::Set(d, 1.0f)};
+}
+
+// The horizon cosine in [-1, 1]: c|c| = num / den.
+HWY_INLINE VF Horizon(DF d, const March& m) {
+    const VF mag = hn::Sqrt(hn::Div(hn::Abs(m.num), m.den));
+    const VF best = hn::IfThenElse(hn::Lt(m.num, hn::Zero(d)), hn::Neg(mag), mag);
+    return hn::Min(hn::Max(best, hn::Set(d, -1.0f)), hn::Set(d, 1.0f));
+}
+
+// One sample of march m at `dist` pixels from the receiver.
 template <bool kPersp, bool kPoints, bool kFalloff>
-HWY_INLINE VF SideHorizon(DF d, const Lattice& L, int steps, const Receiver& r, MF live, VF dirX, VF dirY, VF tExit,
-                          V3 axis, VF lowCos) {
+HWY_INLINE void Step(DF d, const Lattice& L, const Receiver& r, V3 axis, VF dist, March& m) {
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const VF maxX0 = hn::Set(d, L.maxX0), maxY0 = hn::Set(d, L.maxY0), edge = hn::Set(d, L.edge);
     const VF ax = hn::Set(d, L.ax), ay = hn::Set(d, L.ay), halfAx = hn::Set(d, L.halfAx), halfAy = hn::Set(d, L.halfAy);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const float* f = L.f;
     const std::size_t below = std::size_t(L.stride);
-    VF num = hn::Mul(lowCos, hn::Abs(lowCos)), den = one;
-    for (int j = 0; j < steps; ++j) {
-        const VF dist = hn::Max(one, hn::MulAdd(hn::Set(d, float(j)), r.stepScale, r.stepOffset));
-        // Leaving the image ends the march (the screen line does not come back).
-        live = hn::And(live, hn::Lt(dist, tExit));
-        if (hn::AllFalse(d, live)) break;
+    const MF live = m.live;
+    const VF lowCos = m.lowCos;
+    VF num = m.num, den = m.den;
+    {
         // The sample in pixel coordinates minus half a pixel.
-        const VF fx = hn::MulAdd(dirX, dist, r.fx), fy = hn::MulAdd(dirY, dist, r.fy);
+        const VF fx = hn::MulAdd(m.dirX, dist, r.fx), fy = hn::MulAdd(m.dirY, dist, r.fy);
 
         // Depth interpolated in 1/z (perspective) or z between the four
         // surrounding pixel centres, exact on a plane; the nearest pixel where
@@ -192,10 +207,25 @@ HWY_INLINE VF SideHorizon(DF d, const Lattice& L, int steps, const Receiver& r, 
             }
         }
     }
-    // c|c| = num / den.
-    const VF mag = hn::Sqrt(hn::Div(hn::Abs(num), den));
-    const VF best = hn::IfThenElse(hn::Lt(num, zero), hn::Neg(mag), mag);
-    return hn::Min(hn::Max(best, hn::Set(d, -1.0f)), one);
+    m.num = num;
+    m.den = den;
+}
+
+// Marches both sides of a slice together: they share the sample distances,
+// and their two independent chains keep the pipeline fuller.
+template <bool kPersp, bool kPoints, bool kFalloff>
+HWY_INLINE void MarchSlice(DF d, const Lattice& L, int steps, const Receiver& r, V3 axis, March& plus, March& minus) {
+    const VF one = hn::Set(d, 1.0f);
+    for (int j = 0; j < steps; ++j) {
+        const VF dist = hn::Max(one, hn::MulAdd(hn::Set(d, float(j)), r.stepScale, r.stepOffset));
+        // Leaving the image ends a march (the screen line does not come back).
+        plus.live = hn::And(plus.live, hn::Lt(dist, plus.tExit));
+        minus.live = hn::And(minus.live, hn::Lt(dist, minus.tExit));
+        const bool morePlus = !hn::AllFalse(d, plus.live), moreMinus = !hn::AllFalse(d, minus.live);
+        if (!morePlus && !moreMinus) break;
+        if (morePlus) Step<kPersp, kPoints, kFalloff>(d, L, r, axis, dist, plus);
+        if (moreMinus) Step<kPersp, kPoints, kFalloff>(d, L, r, axis, dist, minus);
+    }
 }
 
 template <bool kPersp, bool kPoints, bool kFalloff>
@@ -316,10 +346,10 @@ void HorizonRowT(const Frame& g, const AoSettings& s, int y, float* ao) {
             const VF sinG = hn::Mul(Dot(projN, orthoDir), invP);
             // Lowest horizons: the edges of the normal's hemisphere,
             // cos(g + pi/2) on the + side and cos(g - pi/2) on the - side.
-            const VF c2 = SideHorizon<kPersp, kPoints, kFalloff>(d, L, s.steps, r, ok, c, hn::Neg(sn), exitPlus, axis,
-                                                                 hn::Neg(sinG));
-            const VF c1 = SideHorizon<kPersp, kPoints, kFalloff>(d, L, s.steps, r, ok, hn::Neg(c), sn, exitMinus, axis,
-                                                                 sinG);
+            March plus = StartMarch(d, ok, c, hn::Neg(sn), exitPlus, hn::Neg(sinG));
+            March minus = StartMarch(d, ok, hn::Neg(c), sn, exitMinus, sinG);
+            MarchSlice<kPersp, kPoints, kFalloff>(d, L, s.steps, r, axis, plus, minus);
+            const VF c2 = Horizon(d, plus), c1 = Horizon(d, minus);
             // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
             // within pi/2 of g because the march starts at the hemisphere edge.
             // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
