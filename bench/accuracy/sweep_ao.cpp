@@ -1,8 +1,9 @@
-// Sweep "ao": SSAO (horizon and hemisphere, full and reduced resolution,
-// surface and points geometry) and ray-traced AO at growing sample counts,
-// against the cosine-weighted AO of the same world radius: the scene's closed
-// form where it has one (plane, corner), else reference::ambientOcclusion
-// with many rays. Background is excluded from every statistic.
+// Sweep "ao": SSAO (horizon and hemisphere; full and half resolution, and
+// captured at reduced resolution then upsampled; surface and points geometry)
+// and ray-traced AO at growing sample counts, against the cosine-weighted AO
+// of the same world radius: the scene's closed form where it has one (plane,
+// corner), else reference::ambientOcclusion with many rays. Background is
+// excluded from every statistic.
 #include "ao_common.h"
 #include "harness.h"
 
@@ -85,6 +86,16 @@ std::vector<SsaoSetting> ssaoSettings(const std::string& family) {
     for (int n : {4, 8, 16, 32, 64, 128})
         s.push_back({"hemisphere", "samples=" + std::to_string(n), double(n),
                      {{"method", Value("hemisphere")}, {"samples", Value(n)}}});
+    // The pass's own half resolution (estimator at every other pixel on the
+    // full-resolution depth, the rest filled on the same surface).
+    for (auto [sl, st] : std::vector<std::pair<int, int>>{{4, 4}, {4, 8}, {8, 8}})
+        s.push_back({"horizon half resolution", "slices=" + std::to_string(sl) + " steps=" + std::to_string(st),
+                     double(sl * st) / 4.0,
+                     {{"method", Value("horizon")}, {"slices", Value(sl)}, {"steps", Value(st)},
+                      {"resolution", Value("half")}}});
+    for (int n : {16, 64})
+        s.push_back({"hemisphere half resolution", "samples=" + std::to_string(n), double(n) / 4.0,
+                     {{"method", Value("hemisphere")}, {"samples", Value(n)}, {"resolution", Value("half")}}});
     for (double scale : {0.5, 0.25}) {
         std::ostringstream name;
         name << "horizon at " << scale << "x";

@@ -37,5 +37,9 @@ struct AoSettings {
 // Rows [y0, y1) of AO, written at frame.offset(x, y) of `ao`.
 void hemisphereAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao);
 void horizonAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao);
+// AO of the pixels (xs[i], y), i < count, only; each pixel gets exactly the
+// value the row functions give it.
+void hemisphereAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
+void horizonAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
 
 }  // namespace darkroom::ssao

@@ -28,6 +28,7 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -228,158 +229,199 @@ HWY_INLINE void MarchSlice(DF d, const Lattice& L, int steps, const Receiver& r,
     }
 }
 
+// What every vector of a row shares.
+struct HorizonConstants {
+    Lattice lattice;
+    int y;
+    VF cy, sy;  // pixel centre y, and its image-plane y
+    std::uint32_t rowHash, stream0, stream1;
+    std::vector<float> rotCos, rotSin;  // rotation from the first slice to slice k
+
+    HorizonConstants(DF d, const Frame& g, const AoSettings& s, int row)
+        : lattice(g), y(row), cy(hn::Set(d, float(row) + 0.5f)), sy(hn::Set(d, g.ay * (float(row) + 0.5f) + g.by)),
+          rowHash(mix32(std::uint32_t(row) + 0x632be5abU)), stream0(mix32(s.seed * 0x85ebca6bU + 0)),
+          stream1(mix32(s.seed * 0x85ebca6bU + 1)), rotCos(std::size_t(s.slices)), rotSin(std::size_t(s.slices)) {
+        for (int k = 0; k < s.slices; ++k) {
+            rotCos[std::size_t(k)] = float(std::cos(double(k) * M_PI / s.slices));
+            rotSin[std::size_t(k)] = float(std::sin(double(k) * M_PI / s.slices));
+        }
+    }
+};
+
+// AO of the pixels (x, T.y) given by the lanes: centre cx = x + 0.5, x as
+// an unsigned (for the noise), depth zc (+inf: none) and normal nrm.
 template <bool kPersp, bool kPoints, bool kFalloff>
-void HorizonRowT(const Frame& g, const AoSettings& s, int y, float* ao) {
-    const DF d;
-    const DI di;
-    const int N = int(hn::Lanes(d));
+HWY_INLINE VF HorizonVector(DF d, const Frame& g, const AoSettings& s, const HorizonConstants& T, VF cx, VU xu, VF zc,
+                            V3 nrm) {
     constexpr float kPi = 3.14159265358979323846f;
-    const Lattice L(g);
-    const std::size_t row = g.offset(0, y);
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const VF W = hn::Set(d, float(g.width())), H = hn::Set(d, float(g.height()));
-    const VF cy = hn::Set(d, float(y) + 0.5f);
-    const VF sy = hn::Set(d, g.ay * (float(y) + 0.5f) + g.by);
-    const std::uint32_t rowHash = mix32(std::uint32_t(y) + 0x632be5abU);
-    const std::uint32_t stream0 = mix32(s.seed * 0x85ebca6bU + 0), stream1 = mix32(s.seed * 0x85ebca6bU + 1);
-    const std::size_t sliceCount = std::size_t(s.slices);
-    std::vector<float> rotCos(sliceCount), rotSin(sliceCount);
-    for (int k = 0; k < s.slices; ++k) {
-        rotCos[std::size_t(k)] = float(std::cos(double(k) * M_PI / s.slices));
-        rotSin[std::size_t(k)] = float(std::sin(double(k) * M_PI / s.slices));
-    }
+    const VF cy = T.cy, sy = T.sy;
     const VF invSlices = hn::Set(d, 1.0f / float(s.slices));
     const VF quarter = hn::Set(d, 0.25f), two = hn::Set(d, 2.0f);
-    for (int x = 0; x < g.width(); x += N) {
-        float* out = ao + row + std::size_t(x);
-        const VF zc = hn::Load(d, g.z + row + x);
-        const MF valid = hn::Lt(zc, inf);
-        if (hn::AllFalse(d, valid)) {
-            hn::Store(one, d, out);
-            continue;
-        }
-        Receiver r;
-        const VF zs = hn::IfThenElse(valid, zc, one);
-        const V3 nrm{hn::Load(d, g.n[0] + row + x), hn::Load(d, g.n[1] + row + x),
-                     hn::Load(d, g.n[2] + row + x)};
-        const VF cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
-        r.fx = hn::Sub(cx, half);
-        r.fy = hn::Sub(cy, half);
-        const VF sx = hn::MulAdd(cx, hn::Set(d, g.ax), hn::Set(d, g.bx));
-        r.p = kPersp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs};
-        r.v = kPersp ? Normalize(d, Scale(r.p, hn::Set(d, -1.0f))) : Splat(d, 0, 0, -1);
-        const VF pixelSize = kPersp ? hn::Mul(hn::Set(d, g.pixelScale), zs) : hn::Set(d, g.pixelScale);
-        r.R = s.radiusInImageHeight ? hn::Mul(hn::Set(d, s.radius * float(g.height())), pixelSize)
-                                    : hn::Set(d, s.radius);
-        const VF radiusPixels = hn::Div(r.R, pixelSize);
-        // Nothing is resolvable within a pixel; a radius beyond 1e30 pixels
-        // puts every sample outside the image (and would overflow below).
-        const MF active =
-            hn::And(valid, hn::And(hn::Ge(radiusPixels, one), hn::Lt(radiusPixels, hn::Set(d, 1e30f))));
-        if (hn::AllFalse(d, active)) {
-            hn::Store(one, d, out);
-            continue;
-        }
-        r.origin = AddScaled(r.p, nrm, hn::Mul(hn::Set(d, s.bias), r.R));
-        r.thick = hn::Mul(hn::Set(d, s.thickness), r.R);
-        if (kPoints && kPersp) {
-            r.pointsMinF = hn::Div(one, zs);
-            const VF back = hn::Sub(zs, r.thick);
-            r.pointsMaxF = hn::IfThenElse(hn::Gt(back, zero), hn::Div(one, back), inf);
-        }
-        r.coreR = kFalloff ? hn::Mul(hn::Set(d, 1.0f - s.falloff), r.R) : r.R;
-        r.invFalloffR = kFalloff ? hn::Div(one, hn::Mul(hn::Set(d, s.falloff), r.R)) : zero;
-        const VF sliceNoise = PixelNoise(d, x, rowHash, stream0);
-        const VF stepNoise = PixelNoise(d, x, rowHash, stream1);
-        // Sample j at max(1, (j + stepNoise) / steps * radiusPixels) pixels.
-        r.stepScale = hn::IfThenElseZero(active, hn::Div(radiusPixels, hn::Set(d, float(s.steps))));
-        r.stepOffset = hn::Mul(stepNoise, r.stepScale);
+    const MF valid = hn::Lt(zc, inf);
+    if (hn::AllFalse(d, valid)) return one;
+    Receiver r;
+    const VF zs = hn::IfThenElse(valid, zc, one);
+    r.fx = hn::Sub(cx, half);
+    r.fy = hn::Sub(cy, half);
+    const VF sx = hn::MulAdd(cx, hn::Set(d, g.ax), hn::Set(d, g.bx));
+    r.p = kPersp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs};
+    r.v = kPersp ? Normalize(d, Scale(r.p, hn::Set(d, -1.0f))) : Splat(d, 0, 0, -1);
+    const VF pixelSize = kPersp ? hn::Mul(hn::Set(d, g.pixelScale), zs) : hn::Set(d, g.pixelScale);
+    r.R = s.radiusInImageHeight ? hn::Mul(hn::Set(d, s.radius * float(g.height())), pixelSize)
+                                : hn::Set(d, s.radius);
+    const VF radiusPixels = hn::Div(r.R, pixelSize);
+    // Nothing is resolvable within a pixel; a radius beyond 1e30 pixels
+    // puts every sample outside the image (and would overflow below).
+    const MF active =
+        hn::And(valid, hn::And(hn::Ge(radiusPixels, one), hn::Lt(radiusPixels, hn::Set(d, 1e30f))));
+    if (hn::AllFalse(d, active)) return one;
+    r.origin = AddScaled(r.p, nrm, hn::Mul(hn::Set(d, s.bias), r.R));
+    r.thick = hn::Mul(hn::Set(d, s.thickness), r.R);
+    if (kPoints && kPersp) {
+        r.pointsMinF = hn::Div(one, zs);
+        const VF back = hn::Sub(zs, r.thick);
+        r.pointsMaxF = hn::IfThenElse(hn::Gt(back, zero), hn::Div(one, back), inf);
+    }
+    r.coreR = kFalloff ? hn::Mul(hn::Set(d, 1.0f - s.falloff), r.R) : r.R;
+    r.invFalloffR = kFalloff ? hn::Div(one, hn::Mul(hn::Set(d, s.falloff), r.R)) : zero;
+    const VF sliceNoise = PixelNoise(d, xu, T.rowHash, T.stream0);
+    const VF stepNoise = PixelNoise(d, xu, T.rowHash, T.stream1);
+    // Sample j at max(1, (j + stepNoise) / steps * radiusPixels) pixels.
+    r.stepScale = hn::IfThenElseZero(active, hn::Div(radiusPixels, hn::Set(d, float(s.steps))));
+    r.stepOffset = hn::Mul(stepNoise, r.stepScale);
 
-        // Basis of the plane perpendicular to V.
-        const V3 e1 = Normalize(d, SubScaled(Splat(d, 1, 0, 0), r.v, r.v.x));
-        const V3 e2 = Cross(r.v, e1);
-        // Slices spread uniformly in angle around V (the integral's measure),
-        // not around the screen axis: for off-centre pixels of a perspective
-        // camera the two differ, and uniform screen angles bias AO by a few %.
-        const VF phi0 = hn::Mul(sliceNoise, hn::Set(d, kPi / float(s.slices)));
-        const VF cos0 = hn::Cos(d, phi0), sin0 = hn::Sin(d, phi0);
-        // Distances to the image borders from the pixel centre.
-        const VF toRight = hn::Sub(W, cx), toBottom = hn::Sub(H, cy);
-        VF visibility = zero;
-        for (int k = 0; k < s.slices; ++k) {
-            const VF rc = hn::Set(d, rotCos[std::size_t(k)]), rs = hn::Set(d, rotSin[std::size_t(k)]);
-            const VF cphi = hn::MulSub(cos0, rc, hn::Mul(sin0, rs));
-            const VF sphi = hn::MulAdd(sin0, rc, hn::Mul(cos0, rs));
-            const V3 orthoDir = Add(Scale(e1, cphi), Scale(e2, sphi));
-            // The slice plane holds the camera ray, so it projects to a screen
-            // line through the pixel, along d(X/Z, Y/Z).
-            VF c = orthoDir.x, sn = orthoDir.y;
-            if (kPersp) {
-                c = hn::NegMulAdd(orthoDir.z, sx, c);
-                sn = hn::NegMulAdd(orthoDir.z, sy, sn);
-            }
-            const VF screenLen = hn::Sqrt(hn::MulAdd(c, c, hn::Mul(sn, sn)));
-            MF ok = hn::And(active, hn::Gt(screenLen, hn::Set(d, 1e-6f)));
-            const VF invLen = hn::Div(one, screenLen);
-            c = hn::Mul(c, invLen);
-            sn = hn::Mul(sn, invLen);
-            // The slice's normal: V and orthoDir are orthonormal.
-            const V3 axis = Cross(orthoDir, r.v);
-            const V3 projN = SubScaled(nrm, axis, Dot(nrm, axis));
-            const VF projLen = hn::Sqrt(Dot(projN, projN));
-            ok = hn::And(ok, hn::Gt(projLen, hn::Set(d, 1e-6f)));
-            if (hn::AllFalse(d, ok)) continue;
-            // Where each side's screen line leaves the image: the + side moves
-            // along (c, -sn), the - side along (-c, sn). A zero component
-            // gives an infinite reciprocal, signed as the zero was.
-            const VF invC = hn::Div(one, c), invS = hn::Div(one, sn);
-            const VF a = hn::Mul(toRight, invC), b = hn::Mul(cx, invC);
-            const VF cc = hn::Mul(toBottom, invS), dy = hn::Mul(cy, invS);
-            const MF posC = hn::Gt(invC, zero), posS = hn::Gt(invS, zero);
-            const VF exitPlus = hn::Min(hn::IfThenElse(posC, a, hn::Neg(b)), hn::IfThenElse(posS, dy, hn::Neg(cc)));
-            const VF exitMinus = hn::Min(hn::IfThenElse(posC, b, hn::Neg(a)), hn::IfThenElse(posS, cc, hn::Neg(dy)));
-            // The normal's signed angle g in the slice, through its cosine and
-            // sine (|g| <= pi/2: the normal faces the camera).
-            const VF invP = hn::Div(one, projLen);
-            const VF cosG = hn::Min(hn::Max(hn::Mul(Dot(projN, r.v), invP), hn::Set(d, -1.0f)), one);
-            const VF sinG = hn::Mul(Dot(projN, orthoDir), invP);
-            // Lowest horizons: the edges of the normal's hemisphere,
-            // cos(g + pi/2) on the + side and cos(g - pi/2) on the - side.
-            March plus = StartMarch(d, ok, c, hn::Neg(sn), exitPlus, hn::Neg(sinG));
-            March minus = StartMarch(d, ok, hn::Neg(c), sn, exitMinus, sinG);
-            MarchSlice<kPersp, kPoints, kFalloff>(d, L, s.steps, r, axis, plus, minus);
-            const VF c2 = Horizon(d, plus), c1 = Horizon(d, minus);
-            // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
-            // within pi/2 of g because the march starts at the hemisphere edge.
-            // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
-            const VF h2 = hn::Acos(d, c2), h1 = hn::Neg(hn::Acos(d, c1));
-            const VF s2 = hn::Sqrt(hn::Max(hn::NegMulAdd(c2, c2, one), zero));
-            const VF s1 = hn::Neg(hn::Sqrt(hn::Max(hn::NegMulAdd(c1, c1, one), zero)));
-            const VF cos2h2 = hn::MulSub(two, hn::Mul(c2, c2), one), sin2h2 = hn::Mul(two, hn::Mul(s2, c2));
-            const VF cos2h1 = hn::MulSub(two, hn::Mul(c1, c1), one), sin2h1 = hn::Mul(two, hn::Mul(s1, c1));
-            const VF cosTerms = hn::Sub(two, hn::Add(cos2h2, cos2h1));
-            const VF sinTerms = hn::Sub(hn::Mul(two, hn::Add(h2, h1)), hn::Add(sin2h2, sin2h1));
-            const VF sum = hn::Mul(quarter, hn::MulAdd(sinTerms, sinG, hn::Mul(cosTerms, cosG)));
-            visibility = hn::Add(visibility, hn::IfThenElseZero(ok, hn::Mul(projLen, sum)));
+    // Basis of the plane perpendicular to V.
+    const V3 e1 = Normalize(d, SubScaled(Splat(d, 1, 0, 0), r.v, r.v.x));
+    const V3 e2 = Cross(r.v, e1);
+    // Slices spread uniformly in angle around V (the integral's measure),
+    // not around the screen axis: for off-centre pixels of a perspective
+    // camera the two differ, and uniform screen angles bias AO by a few %.
+    const VF phi0 = hn::Mul(sliceNoise, hn::Set(d, kPi / float(s.slices)));
+    const VF cos0 = hn::Cos(d, phi0), sin0 = hn::Sin(d, phi0);
+    // Distances to the image borders from the pixel centre.
+    const VF toRight = hn::Sub(W, cx), toBottom = hn::Sub(H, cy);
+    VF visibility = zero;
+    for (int k = 0; k < s.slices; ++k) {
+        const VF rc = hn::Set(d, T.rotCos[std::size_t(k)]), rs = hn::Set(d, T.rotSin[std::size_t(k)]);
+        const VF cphi = hn::MulSub(cos0, rc, hn::Mul(sin0, rs));
+        const VF sphi = hn::MulAdd(sin0, rc, hn::Mul(cos0, rs));
+        const V3 orthoDir = Add(Scale(e1, cphi), Scale(e2, sphi));
+        // The slice plane holds the camera ray, so it projects to a screen
+        // line through the pixel, along d(X/Z, Y/Z).
+        VF c = orthoDir.x, sn = orthoDir.y;
+        if (kPersp) {
+            c = hn::NegMulAdd(orthoDir.z, sx, c);
+            sn = hn::NegMulAdd(orthoDir.z, sy, sn);
         }
-        const VF result = hn::Min(hn::Max(hn::Mul(visibility, invSlices), zero), one);
-        hn::Store(hn::IfThenElse(active, result, one), d, out);
+        const VF screenLen = hn::Sqrt(hn::MulAdd(c, c, hn::Mul(sn, sn)));
+        MF ok = hn::And(active, hn::Gt(screenLen, hn::Set(d, 1e-6f)));
+        const VF invLen = hn::Div(one, screenLen);
+        c = hn::Mul(c, invLen);
+        sn = hn::Mul(sn, invLen);
+        // The slice's normal: V and orthoDir are orthonormal.
+        const V3 axis = Cross(orthoDir, r.v);
+        const V3 projN = SubScaled(nrm, axis, Dot(nrm, axis));
+        const VF projLen = hn::Sqrt(Dot(projN, projN));
+        ok = hn::And(ok, hn::Gt(projLen, hn::Set(d, 1e-6f)));
+        if (hn::AllFalse(d, ok)) continue;
+        // Where each side's screen line leaves the image: the + side moves
+        // along (c, -sn), the - side along (-c, sn). A zero component
+        // gives an infinite reciprocal, signed as the zero was.
+        const VF invC = hn::Div(one, c), invS = hn::Div(one, sn);
+        const VF a = hn::Mul(toRight, invC), b = hn::Mul(cx, invC);
+        const VF cc = hn::Mul(toBottom, invS), dy = hn::Mul(cy, invS);
+        const MF posC = hn::Gt(invC, zero), posS = hn::Gt(invS, zero);
+        const VF exitPlus = hn::Min(hn::IfThenElse(posC, a, hn::Neg(b)), hn::IfThenElse(posS, dy, hn::Neg(cc)));
+        const VF exitMinus = hn::Min(hn::IfThenElse(posC, b, hn::Neg(a)), hn::IfThenElse(posS, cc, hn::Neg(dy)));
+        // The normal's signed angle g in the slice, through its cosine and
+        // sine (|g| <= pi/2: the normal faces the camera).
+        const VF invP = hn::Div(one, projLen);
+        const VF cosG = hn::Min(hn::Max(hn::Mul(Dot(projN, r.v), invP), hn::Set(d, -1.0f)), one);
+        const VF sinG = hn::Mul(Dot(projN, orthoDir), invP);
+        // Lowest horizons: the edges of the normal's hemisphere,
+        // cos(g + pi/2) on the + side and cos(g - pi/2) on the - side.
+        March plus = StartMarch(d, ok, c, hn::Neg(sn), exitPlus, hn::Neg(sinG));
+        March minus = StartMarch(d, ok, hn::Neg(c), sn, exitMinus, sinG);
+        MarchSlice<kPersp, kPoints, kFalloff>(d, T.lattice, s.steps, r, axis, plus, minus);
+        const VF c2 = Horizon(d, plus), c1 = Horizon(d, minus);
+        // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
+        // within pi/2 of g because the march starts at the hemisphere edge.
+        // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
+        const VF h2 = hn::Acos(d, c2), h1 = hn::Neg(hn::Acos(d, c1));
+        const VF s2 = hn::Sqrt(hn::Max(hn::NegMulAdd(c2, c2, one), zero));
+        const VF s1 = hn::Neg(hn::Sqrt(hn::Max(hn::NegMulAdd(c1, c1, one), zero)));
+        const VF cos2h2 = hn::MulSub(two, hn::Mul(c2, c2), one), sin2h2 = hn::Mul(two, hn::Mul(s2, c2));
+        const VF cos2h1 = hn::MulSub(two, hn::Mul(c1, c1), one), sin2h1 = hn::Mul(two, hn::Mul(s1, c1));
+        const VF cosTerms = hn::Sub(two, hn::Add(cos2h2, cos2h1));
+        const VF sinTerms = hn::Sub(hn::Mul(two, hn::Add(h2, h1)), hn::Add(sin2h2, sin2h1));
+        const VF sum = hn::Mul(quarter, hn::MulAdd(sinTerms, sinG, hn::Mul(cosTerms, cosG)));
+        visibility = hn::Add(visibility, hn::IfThenElseZero(ok, hn::Mul(projLen, sum)));
+    }
+    const VF result = hn::Min(hn::Max(hn::Mul(visibility, invSlices), zero), one);
+    return hn::IfThenElse(active, result, one);
+}
+
+template <bool kPersp, bool kPoints, bool kFalloff>
+void HorizonRowT(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao) {
+    const DF d;
+    const DI di;
+    const DU du;
+    const int N = int(hn::Lanes(d));
+    const HorizonConstants T(d, g, s, y);
+    const std::size_t row = g.offset(0, y);
+    const VF half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
+    if (!xs) {
+        // Every pixel of the row: whole vectors (the row's tail is padding).
+        for (int x = 0; x < g.width(); x += N) {
+            const VF zc = hn::Load(d, g.z + row + x);
+            VF result = one;
+            if (!hn::AllFalse(d, hn::Lt(zc, hn::Set(d, std::numeric_limits<float>::infinity())))) {
+                const VI xi = hn::Add(hn::Iota(di, 0), hn::Set(di, x));
+                const V3 nrm{hn::Load(d, g.n[0] + row + x), hn::Load(d, g.n[1] + row + x), hn::Load(d, g.n[2] + row + x)};
+                result = HorizonVector<kPersp, kPoints, kFalloff>(d, g, s, T, hn::Add(hn::ConvertTo(d, xi), half),
+                                                                  hn::BitCast(du, xi), zc, nrm);
+            }
+            hn::Store(result, d, ao + row + x);
+        }
+        return;
+    }
+    // The listed pixels: gathered, computed, scattered.
+    alignas(64) std::int32_t lane[64];
+    alignas(64) float out[64];
+    for (int i = 0; i < count; i += N) {
+        const int n = std::min(N, count - i);
+        for (int k = 0; k < N; ++k) lane[k] = xs[i + std::min(k, n - 1)];
+        const VI xi = hn::Load(di, lane);
+        const VI at = hn::Add(xi, hn::Set(di, int(row)));
+        const VF zc = hn::GatherIndex(d, g.z, at);
+        const V3 nrm{hn::GatherIndex(d, g.n[0], at), hn::GatherIndex(d, g.n[1], at), hn::GatherIndex(d, g.n[2], at)};
+        hn::Store(HorizonVector<kPersp, kPoints, kFalloff>(d, g, s, T, hn::Add(hn::ConvertTo(d, xi), half),
+                                                            hn::BitCast(du, xi), zc, nrm),
+                  d, out);
+        for (int k = 0; k < n; ++k) ao[row + std::size_t(xs[i + k])] = out[k];
     }
 }
 
-void HorizonRow(const Frame& g, const AoSettings& s, int y, float* ao) {
+// Row y: every pixel (xs null) or the count pixels xs.
+void HorizonRow(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao) {
     const bool points = s.geometry == Geometry::Points, falloff = s.falloff > 0;
     if (g.perspective()) {
         if (points)
-            falloff ? HorizonRowT<true, true, true>(g, s, y, ao) : HorizonRowT<true, true, false>(g, s, y, ao);
+            falloff ? HorizonRowT<true, true, true>(g, s, y, xs, count, ao)
+                    : HorizonRowT<true, true, false>(g, s, y, xs, count, ao);
         else
-            falloff ? HorizonRowT<true, false, true>(g, s, y, ao) : HorizonRowT<true, false, false>(g, s, y, ao);
+            falloff ? HorizonRowT<true, false, true>(g, s, y, xs, count, ao)
+                    : HorizonRowT<true, false, false>(g, s, y, xs, count, ao);
     } else {
         if (points)
-            falloff ? HorizonRowT<false, true, true>(g, s, y, ao) : HorizonRowT<false, true, false>(g, s, y, ao);
+            falloff ? HorizonRowT<false, true, true>(g, s, y, xs, count, ao)
+                    : HorizonRowT<false, true, false>(g, s, y, xs, count, ao);
         else
-            falloff ? HorizonRowT<false, false, true>(g, s, y, ao) : HorizonRowT<false, false, false>(g, s, y, ao);
+            falloff ? HorizonRowT<false, false, true>(g, s, y, xs, count, ao)
+                    : HorizonRowT<false, false, false>(g, s, y, xs, count, ao);
     }
 }
 
@@ -392,7 +434,11 @@ namespace darkroom::ssao {
 HWY_EXPORT(HorizonRow);
 
 void horizonAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao) {
-    for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(HorizonRow)(g, s, y, ao);
+    for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(HorizonRow)(g, s, y, nullptr, 0, ao);
+}
+
+void horizonAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao) {
+    if (count > 0) HWY_DYNAMIC_DISPATCH(HorizonRow)(g, s, y, xs, count, ao);
 }
 
 }  // namespace darkroom::ssao

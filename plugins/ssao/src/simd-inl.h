@@ -76,11 +76,10 @@ HWY_INLINE VU Mix32(VU v) {
     v = hn::Mul(v, hn::Set(du, 0x846ca68bU));
     return hn::Xor(v, hn::ShiftRight<16>(v));
 }
-// pixelNoise(x, y, seed, stream) for the pixels x0 .. x0 + lanes - 1 of row y;
+// pixelNoise(x, y, seed, stream) for the pixels x (one a lane) of row y;
 // rowHash = mix32(y + 0x632be5ab), streamHash = mix32(seed * 0x85ebca6b + stream).
-HWY_INLINE VF PixelNoise(DF d, int x0, std::uint32_t rowHash, std::uint32_t streamHash) {
+HWY_INLINE VF PixelNoise(DF d, VU x, std::uint32_t rowHash, std::uint32_t streamHash) {
     const DU du;
-    const VU x = hn::Add(hn::Iota(du, 0), hn::Set(du, std::uint32_t(x0)));
     VU h = Mix32(hn::Xor(hn::Mul(x, hn::Set(du, 0x9e3779b9U)), hn::Set(du, rowHash)));
     h = Mix32(hn::Xor(h, hn::Set(du, streamHash)));
     const VI top = hn::BitCast(DI(), hn::ShiftRight<8>(h));

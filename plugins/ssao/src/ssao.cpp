@@ -4,10 +4,12 @@
 #include "bilateral_blur.h"
 #include "finish.h"
 #include "frame.h"
+#include "half_resolution.h"
 
 #include <darkroom/error.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -16,7 +18,7 @@ namespace darkroom {
 
 PortList Ssao::ports() const {
     return {image_,     method_, geometry_,  radius_, radiusUnits_, samples_, slices_, steps_,    falloff_,
-            bias_,      thickness_, intensity_, power_, seed_,      blurRadius_, useNormals_, result_};
+            bias_,      thickness_, intensity_, power_, seed_,      blurRadius_, resolution_, useNormals_, result_};
 }
 
 void Ssao::execute(Context& ctx) {
@@ -54,28 +56,46 @@ void Ssao::execute(Context& ctx) {
     }
 
     const int blurRadius = int(ctx.get(blurRadius_));
+    const bool hemisphere = ctx.get(method_) == Method::Hemisphere;
     const Frame g = buildFrame(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
     ctx.progress(0.1);
-    // Raw AO (and the blur's intermediate) in padded planes, whose padding
-    // reads as unoccluded: the blur reads past the borders.
-    const auto scratch = g.allocatePlanes(ctx, blurRadius > 0 ? 2 : 1);
+    // Raw AO (and the blur's or the half resolution's intermediate) in
+    // padded planes, whose padding reads as unoccluded: the blur reads past
+    // the borders.
+    const bool half = ctx.get(resolution_) == Resolution::Half;
+    const auto scratch = g.allocatePlanes(ctx, blurRadius > 0 || half ? 2 : 1);
     float* raw = scratch->writeFloat("plane0");
-    float* tmp = blurRadius > 0 ? scratch->writeFloat("plane1") : nullptr;
+    float* tmp = blurRadius > 0 || half ? scratch->writeFloat("plane1") : nullptr;
     g.fillPadding(raw, -g.padY, 0, 1.0f);
     g.fillPadding(raw, h, h + g.padY, 1.0f);
     if (tmp) {
         g.fillPadding(tmp, -g.padY, 0, 1.0f);
         g.fillPadding(tmp, h, h + g.padY, 1.0f);
     }
-    const bool hemisphere = ctx.get(method_) == Method::Hemisphere;
-    ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
-        g.fillPadding(raw, y0, y1, 1.0f);
-        if (tmp) g.fillPadding(tmp, y0, y1, 1.0f);
-        if (hemisphere)
-            hemisphereAO(g, s, y0, y1, raw);
-        else
-            horizonAO(g, s, y0, y1, raw);
-    });
+    auto estimateRows = hemisphere ? hemisphereAO : horizonAO;
+    auto estimateAt = hemisphere ? hemisphereAOAt : horizonAOAt;
+    if (!half) {
+        ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+            g.fillPadding(raw, y0, y1, 1.0f);
+            if (tmp) g.fillPadding(tmp, y0, y1, 1.0f);
+            estimateRows(g, s, y0, y1, raw);
+        });
+    } else {
+        // Even rows at even x into tmp, then every row of raw from them.
+        std::vector<std::int32_t> even;
+        for (int x = 0; x < in->width(); x += 2) even.push_back(x);
+        ctx.parallelFor(0, (h + 1) / 2, 2, [&](int r0, int r1) {
+            for (int r = r0; r < r1; ++r) {
+                g.fillPadding(tmp, 2 * r, std::min(2 * r + 2, h), 1.0f);
+                estimateAt(g, s, 2 * r, even.data(), int(even.size()), tmp);
+            }
+        });
+        ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+            std::vector<std::int32_t> missing(std::size_t(in->width()));
+            g.fillPadding(raw, y0, y1, 1.0f);
+            for (int y = y0; y < y1; ++y) estimateAt(g, s, y, missing.data(), fillRow(g, y, tmp, raw, missing.data()), raw);
+        });
+    }
     ctx.progress(0.8);
     if (blurRadius > 0) {
         const std::vector<float> spatial = blurWeights(blurRadius);
