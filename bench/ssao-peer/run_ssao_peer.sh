@@ -23,7 +23,7 @@ xvfb-run -a -s "-screen 0 1920x1200x24" /usr/bin/python3 "$here/vtk_ssao_peer.py
 echo
 echo "load: $(uptime)"
 vtk=$(sed -n 's/^RESULT vtk_ssao_ms=\([0-9.-]*\).*/\1/p' "$tmp/vtk.txt")
-for setting in hemisphere16 horizon4x8; do
+for setting in hemisphere16 horizon4x8 hemisphere16-full horizon4x8-full; do
   ours=$(sed -n "s/^RESULT ssao_ms $setting=\([0-9.]*\).*/\1/p" "$tmp/ours.txt")
-  python3 -c "import sys; o, v = float(sys.argv[1]), float(sys.argv[2]); print('SSAO %-12s %7.2f ms per frame, vtkSSAOPass (kernel 16, blur) %7.2f ms: ours is %.2fx %s' % (sys.argv[3], o, v, max(v/o, o/v), 'faster' if o < v else 'slower'))" "$ours" "$vtk" "$setting"
+  python3 -c "import sys; o, v = float(sys.argv[1]), float(sys.argv[2]); print('SSAO %-17s %7.2f ms per frame, vtkSSAOPass (kernel 16, blur) %7.2f ms: ours is %.2fx %s' % (sys.argv[3], o, v, max(v/o, o/v), 'faster' if o < v else 'slower'))" "$ours" "$vtk" "$setting"
 done

@@ -83,8 +83,13 @@ HWY_INLINE VF HemisphereVector(DF d, const Frame& g, const AoSettings& s, const 
     const V3 helper{hn::IfThenElseZero(useX, one), hn::IfThenZeroElse(useX, one), zero};
     const V3 t0 = Normalize(d, Cross(helper, nrm));
     const V3 b0 = Cross(nrm, t0);
-    const VF rot = hn::Mul(hn::Set(d, kTwoPi), PixelNoise(d, xu, T.rowHash, T.stream0));
-    const VF jitter = PixelNoise(d, xu, T.rowHash, T.stream1);
+    VF spin = PixelNoise(d, xu, T.rowHash, T.stream0);
+    VF jitter = PixelNoise(d, xu, T.rowHash, T.stream1);
+    if (s.interleave) {
+        spin = Stratify(d, xu, T.y, spin, false);
+        jitter = Stratify(d, xu, T.y, jitter, true);
+    }
+    const VF rot = hn::Mul(hn::Set(d, kTwoPi), spin);
     const VF cosRot = hn::Cos(d, rot), sinRot = hn::Sin(d, rot);
     const V3 origin = AddScaled(p, nrm, hn::Mul(hn::Set(d, s.bias), R));
     const VF thick = hn::Mul(hn::Set(d, s.thickness), R);

@@ -63,6 +63,7 @@ void Ssao::execute(Context& ctx) {
     // padded planes, whose padding reads as unoccluded: the blur reads past
     // the borders.
     const bool half = ctx.get(resolution_) == Resolution::Half;
+    s.interleave = half;
     const auto scratch = g.allocatePlanes(ctx, blurRadius > 0 || half ? 2 : 1);
     float* raw = scratch->writeFloat("plane0");
     float* tmp = blurRadius > 0 || half ? scratch->writeFloat("plane1") : nullptr;

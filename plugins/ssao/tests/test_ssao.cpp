@@ -219,7 +219,8 @@ TEST(Ssao, HalfResolutionDoesNotBleedAcrossSilhouettes) {
         return std::min(sphereHit(o, d, {0, 0, 0.65}, 0.5), planeHit(o, d, {0, 0, 0}, {0, 0, 1}));
     });
     Inputs p{{"method", {Value("horizon")}},   {"radiusUnits", {Value("world")}}, {"radius", {Value(1.0)}},
-             {"slices", {Value(std::int64_t(8))}}, {"steps", {Value(std::int64_t(16))}}, {"blurRadius", {Value(0)}}};
+             {"slices", {Value(std::int64_t(8))}}, {"steps", {Value(std::int64_t(16))}}, {"blurRadius", {Value(0)}},
+             {"resolution", {Value("full")}}};
     const BufferPtr full = runSsao(z, p);
     p["resolution"] = {Value("half")};
     const BufferPtr half = runSsao(z, p);
