@@ -22,7 +22,7 @@ struct AoSettings {
     float thickness = 0.5f;           // points geometry: occluder thickness along the view, in radii
     std::uint32_t seed = 0;
     Geometry geometry = Geometry::Surface;
-    bool interleave = false;          // stratify the noise over 2 x 2 blocks of even pixels (half resolution)
+    bool interleave = false;          // stratify the rotation noise over 2 x 2 blocks of even pixels (half resolution)
 };
 
 // Both estimators weight an occluder at distance `dist` from the receiver by

@@ -84,11 +84,8 @@ HWY_INLINE VF HemisphereVector(DF d, const Frame& g, const AoSettings& s, const 
     const V3 t0 = Normalize(d, Cross(helper, nrm));
     const V3 b0 = Cross(nrm, t0);
     VF spin = PixelNoise(d, xu, T.rowHash, T.stream0);
-    VF jitter = PixelNoise(d, xu, T.rowHash, T.stream1);
-    if (s.interleave) {
-        spin = Stratify(d, xu, T.y, spin, false);
-        jitter = Stratify(d, xu, T.y, jitter, true);
-    }
+    if (s.interleave) spin = Stratify(d, xu, T.y, spin);
+    const VF jitter = PixelNoise(d, xu, T.rowHash, T.stream1);
     const VF rot = hn::Mul(hn::Set(d, kTwoPi), spin);
     const VF cosRot = hn::Cos(d, rot), sinRot = hn::Sin(d, rot);
     const V3 origin = AddScaled(p, nrm, hn::Mul(hn::Set(d, s.bias), R));

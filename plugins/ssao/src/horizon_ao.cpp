@@ -288,11 +288,8 @@ HWY_INLINE VF HorizonVector(DF d, const Frame& g, const AoSettings& s, const Hor
     r.coreR = kFalloff ? hn::Mul(hn::Set(d, 1.0f - s.falloff), r.R) : r.R;
     r.invFalloffR = kFalloff ? hn::Div(one, hn::Mul(hn::Set(d, s.falloff), r.R)) : zero;
     VF sliceNoise = PixelNoise(d, xu, T.rowHash, T.stream0);
-    VF stepNoise = PixelNoise(d, xu, T.rowHash, T.stream1);
-    if (s.interleave) {
-        sliceNoise = Stratify(d, xu, T.y, sliceNoise, false);
-        stepNoise = Stratify(d, xu, T.y, stepNoise, true);
-    }
+    if (s.interleave) sliceNoise = Stratify(d, xu, T.y, sliceNoise);
+    const VF stepNoise = PixelNoise(d, xu, T.rowHash, T.stream1);
     // Sample j at max(1, (j + stepNoise) / steps * radiusPixels) pixels.
     r.stepScale = hn::IfThenElseZero(active, hn::Div(radiusPixels, hn::Set(d, float(s.steps))));
     r.stepOffset = hn::Mul(stepNoise, r.stepScale);

@@ -86,20 +86,19 @@ HWY_INLINE VF PixelNoise(DF d, VU x, std::uint32_t rowHash, std::uint32_t stream
     return hn::Mul(hn::ConvertTo(d, top), hn::Set(d, 1.0f / 16777216.0f));
 }
 
-// Half resolution: the noise u of the computed pixels (even x and y) is
-// stratified over each 2 x 2 block of them, (k + u) / 4 with k from a 2 x 2
-// Bayer pattern of (x/2, y/2) for the first stream and its Latin-square
-// partner for the second, so the blur, which spans at least two computed
-// pixels each way, averages every quarter of the range (interleaved sampling).
-// Each pixel's noise stays uniform in [0, 1).
-HWY_INLINE VF Stratify(DF d, VU x, int y, VF u, bool second) {
+// Half resolution: the rotation noise u of the computed pixels (even x and
+// y) is stratified over each 2 x 2 block of them, (k + u) / 4 with k from a
+// 2 x 2 Bayer pattern of (x/2, y/2), so the blur, which spans at least two
+// computed pixels each way, averages every quarter of the range (interleaved
+// sampling). Each pixel's rotation stays uniform in [0, 1) and independent of
+// its other noise (the step jitter is not stratified: tying the two together
+// would bias the estimate).
+HWY_INLINE VF Stratify(DF d, VU x, int y, VF u) {
     const DU du;
     const VF bx = hn::ConvertTo(d, hn::BitCast(DI(), hn::And(hn::ShiftRight<1>(x), hn::Set(du, 1u))));
-    const bool oddRow = ((y >> 1) & 1) != 0;
-    // Bayer: [0 2; 3 1]; partner (3k mod 4): [0 2; 1 3].
+    // Bayer: [0 2; 3 1].
     const VF two = hn::Set(d, 2.0f);
-    VF k = oddRow ? hn::NegMulAdd(two, bx, hn::Set(d, second ? 1.0f : 3.0f)) : hn::Mul(two, bx);
-    if (oddRow && second) k = hn::MulAdd(two, bx, hn::Set(d, 1.0f));
+    const VF k = ((y >> 1) & 1) != 0 ? hn::NegMulAdd(two, bx, hn::Set(d, 3.0f)) : hn::Mul(two, bx);
     return hn::Mul(hn::Add(k, u), hn::Set(d, 0.25f));
 }
 
