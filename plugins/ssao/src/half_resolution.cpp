@@ -1,10 +1,11 @@
 // Half resolution: the estimator runs at the pixels with even x and even y
 // (on the full-resolution depth, so no geometry is lost), and every other
 // pixel takes the mean of its computed neighbours when all of them lie on its
-// own surface: within one pixel footprint of its tangent plane. A pixel next
-// to a depth edge (or the image border, or a one-pixel feature) is computed
-// itself, so occlusion neither bleeds across silhouettes (the halos of plain
-// upsampling) nor is extrapolated from one side where it changes fastest.
+// own surface: within one pixel footprint of its tangent plane, normals within
+// about 25 degrees. A pixel next to a depth edge or a crease (or the image
+// border, or a one-pixel feature) is computed itself, so occlusion neither
+// bleeds across silhouettes (the halos of plain upsampling) nor is
+// extrapolated from one side where it changes fastest.
 //
 //   even row:  computed  fill(L, R)  computed ...
 //   odd row:   fill(U, D)  fill(4 diagonals)  ...
@@ -62,13 +63,19 @@ int FillRow(const Frame& g, int y, const float* in, float* out, std::int32_t* mi
             // One pixel footprint at the pixel's depth.
             const VF tolerance = persp ? hn::Mul(hn::Set(d, g.pixelScale), zs) : hn::Set(d, g.pixelScale);
             const VF planeP = Dot(nrm, p);
+            // Normals within about 25 degrees: across a crease occlusion changes
+            // fastest (and reconstructed normals bend), so those pixels are computed.
+            const VF minCos = hn::Set(d, 0.9f);
             VF sum = zero;
             MF filled = fill;  // until a neighbour is off the surface
             auto consider = [&](std::ptrdiff_t offset, float dx, VF sy, MF applies) {
                 const VF zq = hn::LoadU(d, g.z + std::ptrdiff_t(i) + offset);
                 const MF here = hn::And(fill, applies);
                 const V3 q = position(hn::Add(cx, hn::Set(d, dx)), sy, hn::IfThenElse(hn::Lt(zq, inf), zq, one));
-                const MF ok = hn::And(hn::Lt(zq, inf), hn::Le(hn::Abs(hn::Sub(Dot(nrm, q), planeP)), tolerance));
+                const V3 nq{hn::LoadU(d, g.n[0] + std::ptrdiff_t(i) + offset), hn::LoadU(d, g.n[1] + std::ptrdiff_t(i) + offset),
+                            hn::LoadU(d, g.n[2] + std::ptrdiff_t(i) + offset)};
+                const MF ok = hn::And(hn::And(hn::Lt(zq, inf), hn::Le(hn::Abs(hn::Sub(Dot(nrm, q), planeP)), tolerance)),
+                                      hn::Ge(Dot(nrm, nq), minCos));
                 filled = hn::AndNot(hn::AndNot(ok, here), filled);
                 sum = hn::Add(sum, hn::IfThenElseZero(here, hn::LoadU(d, in + std::ptrdiff_t(i) + offset)));
             };
