@@ -55,20 +55,21 @@ struct Lattice {
     int base;         // plane offset of pixel (0, 0)
     bool smallPlane;  // every offset below 2^23
     bool canInterp;   // at least 2 x 2 pixels
-    float maxX0, maxY0, edge, ax, bx, ay, by, halfAx, halfAy;
+    float maxX0, maxY0, edge, ax, ay, halfAx, halfAy;
+    float indexBase;  // base + 2^23
 
     explicit Lattice(const Frame& g)
         : f(g.f), z(g.z), stride(float(g.stride)), base(int(g.offset(0, 0))),
           smallPlane(g.planeSize() < (std::size_t(1) << 23)), canInterp(g.width() >= 2 && g.height() >= 2),
-          maxX0(float(g.width() - 2)), maxY0(float(g.height() - 2)), edge(4.0f * g.pixelScale), ax(g.ax), bx(g.bx),
-          ay(g.ay), by(g.by), halfAx(g.bx + 0.5f * g.ax), halfAy(g.by + 0.5f * g.ay) {}
+          maxX0(float(g.width() - 2)), maxY0(float(g.height() - 2)), edge(4.0f * g.pixelScale), ax(g.ax), ay(g.ay),
+          halfAx(g.bx + 0.5f * g.ax), halfAy(g.by + 0.5f * g.ay), indexBase(float(base) + 8388608.0f) {}
 
     // Plane offsets of pixels (x, y), given as integer-valued floats.
     HWY_INLINE VI Index(DF d, VF x, VF y) const {
         const DI di;
         if (smallPlane) {
             // Exact below 2^23: the integer is in the mantissa of at + 2^23.
-            const VF at = hn::MulAdd(y, hn::Set(d, stride), hn::Add(x, hn::Set(d, float(base) + 8388608.0f)));
+            const VF at = hn::MulAdd(y, hn::Set(d, stride), hn::Add(x, hn::Set(d, indexBase)));
             return hn::Sub(hn::BitCast(di, at), hn::Set(di, 0x4b000000));
         }
         return hn::Add(hn::Add(hn::Mul(hn::ConvertTo(di, y), hn::Set(di, int(stride))), hn::ConvertTo(di, x)),
