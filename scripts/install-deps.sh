@@ -25,6 +25,8 @@ packages=(
   # scale-out: MPI (mpirun runs the distributed tests) and the in situ API's
   # Fortran module (docs/scale-out.md)
   libopenmpi-dev openmpi-bin gfortran
+  # SIMD kernels (plugins/ssao)
+  libhwy-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)
   abigail-tools
   "$@"

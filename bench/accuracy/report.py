@@ -39,6 +39,8 @@ SWEEPS = {
 DEFAULT_SETTINGS = {
     ("ao", "horizon"): "slices=4 steps=8",
     ("ao", "hemisphere"): "samples=16",
+    ("ao", "horizon full resolution"): "slices=4 steps=8",
+    ("ao", "hemisphere full resolution"): "samples=16",
     ("ao", "ray traced (cosine)"): "samples=16",
     ("ao", "EDL"): "radius=1 scales=2",
     ("ao", "EDL (strength 0.1)"): "radius=1 scales=2",

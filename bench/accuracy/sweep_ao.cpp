@@ -1,8 +1,9 @@
-// Sweep "ao": SSAO (horizon and hemisphere, full and reduced resolution,
-// surface and points geometry) and ray-traced AO at growing sample counts,
-// against the cosine-weighted AO of the same world radius: the scene's closed
-// form where it has one (plane, corner), else reference::ambientOcclusion
-// with many rays. Background is excluded from every statistic.
+// Sweep "ao": SSAO (horizon and hemisphere; half resolution, the default, and
+// full, and captured at reduced resolution then upsampled; surface and points
+// geometry) and ray-traced AO at growing sample counts, against the
+// cosine-weighted AO of the same world radius: the scene's closed form where
+// it has one (plane, corner), else reference::ambientOcclusion with many rays.
+// Background is excluded from every statistic.
 #include "ao_common.h"
 #include "harness.h"
 
@@ -79,17 +80,33 @@ struct SsaoSetting {
 
 std::vector<SsaoSetting> ssaoSettings(const std::string& family) {
     std::vector<SsaoSetting> s;
+    // The pass as configured by default (resolution: half: the estimator at
+    // even x and y on the full-resolution depth, the rest filled on the same
+    // surface), at growing sample counts.
     for (auto [sl, st] : std::vector<std::pair<int, int>>{{1, 2}, {2, 4}, {4, 4}, {4, 8}, {8, 8}, {8, 16}, {16, 16}})
         s.push_back({"horizon", "slices=" + std::to_string(sl) + " steps=" + std::to_string(st), double(sl * st),
                      {{"method", Value("horizon")}, {"slices", Value(sl)}, {"steps", Value(st)}}});
     for (int n : {4, 8, 16, 32, 64, 128})
         s.push_back({"hemisphere", "samples=" + std::to_string(n), double(n),
                      {{"method", Value("hemisphere")}, {"samples", Value(n)}}});
+    // The estimator at every pixel.
+    for (auto [sl, st] : std::vector<std::pair<int, int>>{{4, 4}, {4, 8}, {8, 8}, {16, 16}})
+        s.push_back({"horizon full resolution", "slices=" + std::to_string(sl) + " steps=" + std::to_string(st),
+                     double(sl * st),
+                     {{"method", Value("horizon")}, {"slices", Value(sl)}, {"steps", Value(st)},
+                      {"resolution", Value("full")}}});
+    for (int n : {16, 64})
+        s.push_back({"hemisphere full resolution", "samples=" + std::to_string(n), double(n),
+                     {{"method", Value("hemisphere")}, {"samples", Value(n)}, {"resolution", Value("full")}}});
+    // Captured at a fraction of the size, the estimator at every pixel there,
+    // then upsampled bilinearly.
     for (double scale : {0.5, 0.25}) {
         std::ostringstream name;
         name << "horizon at " << scale << "x";
         s.push_back({name.str(), "slices=4 steps=8", 32.0 * scale * scale,
-                     {{"method", Value("horizon")}, {"slices", Value(4)}, {"steps", Value(8)}}, scale});
+                     {{"method", Value("horizon")}, {"slices", Value(4)}, {"steps", Value(8)},
+                      {"resolution", Value("full")}},
+                     scale});
     }
     // The captured normals instead of reconstructed ones: separates the
     // normal's share of the error from the occlusion estimate's.

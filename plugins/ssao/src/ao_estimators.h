@@ -1,11 +1,11 @@
 #pragma once
 // The two occlusion estimators. Both write raw AO in [0, 1] (1 = unoccluded)
-// for every pixel; pixels without valid depth get 1.
-#include "pixel_geometry.h"
+// for every pixel into a plane of the frame's layout; pixels without valid
+// depth get 1.
+#include "frame.h"
 
 #include <darkroom/context.h>
 
-#include <algorithm>
 #include <cstdint>
 
 namespace darkroom::ssao {
@@ -22,30 +22,25 @@ struct AoSettings {
     float thickness = 0.5f;           // points geometry: occluder thickness along the view, in radii
     std::uint32_t seed = 0;
     Geometry geometry = Geometry::Surface;
-
-    // Occlusion radius in world units at planar depth z.
-    float worldRadius(const PixelGeometry& g, float z) const {
-        return radiusInImageHeight ? radius * float(g.height()) * g.pixelSizeAt(z) : radius;
-    }
+    bool interleave = false;          // stratify the rotation noise over 2 x 2 blocks of even pixels (half resolution)
 };
 
-// Weight of an occluder at distance `dist` from the receiver: 1 inside
-// (1 - falloff) * radius, fading linearly to 0 at the radius; a hard cut when
-// falloff is 0 (the definition of ray-traced AO with a maximum distance).
-inline float falloffWeight(float dist, float radius, float falloff) {
-    if (falloff <= 0) return dist <= radius ? 1.0f : 0.0f;
-    return std::clamp((radius - dist) / (falloff * radius), 0.0f, 1.0f);
-}
+// Both estimators weight an occluder at distance `dist` from the receiver by
+// 1 inside (1 - falloff) * radius, fading linearly to 0 at the radius; a hard
+// cut when falloff is 0 (the definition of ray-traced AO with a maximum
+// distance).
+//
+// Points geometry: the visible surface at depth Zo may occlude a receiver at
+// depth Zr only when it is nearer and within the assumed thickness
+// (Zo < Zr <= Zo + thickness * R): a particle far in front is a separate
+// object whose back side does not reach the receiver.
 
-// Points geometry: may the visible surface at depth `occluderZ` occlude a
-// receiver at depth `receiverZ`? Only nearer surfaces do, and only within the
-// assumed thickness: a particle far in front is a separate object whose back
-// side does not reach the receiver.
-inline bool pointsOccluderAllowed(float occluderZ, float receiverZ, float thickness) {
-    return occluderZ < receiverZ && receiverZ - occluderZ <= thickness;
-}
-
-void hemisphereAO(const PixelGeometry& g, const AoSettings& s, Context& ctx, float* ao);
-void horizonAO(const PixelGeometry& g, const AoSettings& s, Context& ctx, float* ao);
+// Rows [y0, y1) of AO, written at frame.offset(x, y) of `ao`.
+void hemisphereAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao);
+void horizonAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao);
+// AO of the pixels (xs[i], y), i < count, only; each pixel gets exactly the
+// value the row functions give it.
+void hemisphereAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
+void horizonAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
 
 }  // namespace darkroom::ssao

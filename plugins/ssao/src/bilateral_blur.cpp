@@ -1,54 +1,105 @@
+// Separable depth-aware blur, SIMD over the pixels of a row (Highway). Both
+// passes read whole vectors (the horizontal taps are the row shifted by k,
+// the vertical ones the row k above or below); the frame's padding reads as
+// "no surface", so there are no bounds checks.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "bilateral_blur.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
 #include "bilateral_blur.h"
+#include "simd-inl.h"
+
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
-namespace darkroom::ssao {
+HWY_BEFORE_NAMESPACE();
+namespace darkroom::ssao::HWY_NAMESPACE {
 
-namespace {
-
-void blurPass(const PixelGeometry& g, const AoSettings& s, const std::vector<float>& spatial, int dx, int dy,
-              Context& ctx, const float* src, float* dst) {
-    const int radius = int(spatial.size()) - 1;
-    ctx.parallelFor(0, g.height(), 8, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < g.width(); ++x) {
-                const std::size_t i = g.index(x, y);
-                if (!g.valid[i]) {
-                    dst[i] = src[i];
-                    continue;
-                }
-                const V3f p = g.points[i];
-                const V3f nrm = g.normal[i];
-                const float sigma = 0.1f * s.worldRadius(g, p.z);
-                const float inv = sigma > 0 ? 1.0f / (sigma * sigma) : 0.0f;
-                float sum = spatial[0] * src[i], weight = spatial[0];
-                for (int k = -radius; k <= radius; ++k) {
-                    if (k == 0) continue;
-                    const int qx = x + k * dx, qy = y + k * dy;
-                    if (qx < 0 || qy < 0 || qx >= g.width() || qy >= g.height()) continue;
-                    const std::size_t q = g.index(qx, qy);
-                    if (!g.valid[q]) continue;
-                    const float plane = dot(nrm, g.points[q] - p);
-                    const float w = spatial[std::size_t(std::abs(k))] * std::exp(-plane * plane * inv);
-                    sum += w * src[q];
-                    weight += w;
-                }
-                dst[i] = sum / weight;
-            }
-    });
+// One row of one pass: dst = blur of src along (dx, dy) = (1, 0) or (0, 1).
+void BlurRow(const Frame& g, const AoSettings& s, const float* spatial, int radius, bool vertical, int y,
+             const float* src, float* dst) {
+    const DF d;
+    const DI di;
+    const int N = int(hn::Lanes(d));
+    const bool persp = g.perspective();
+    const std::size_t row = g.offset(0, y);
+    const std::ptrdiff_t step = vertical ? std::ptrdiff_t(g.stride) : 1;
+    const float* z = g.z;
+    const VF zero = hn::Zero(d), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
+    const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
+    const VF ax = hn::Set(d, g.ax), bx = hn::Set(d, g.bx);
+    const VF sy = hn::Set(d, g.ay * (float(y) + 0.5f) + g.by);
+    // sigma = 0.1 R: exp(-plane^2 / sigma^2) = exp(plane^2 * k / pixelSize^2) below.
+    const float radiusScale = 0.1f * (s.radiusInImageHeight ? s.radius * float(g.height()) : 1.0f);
+    for (int x = 0; x < g.width(); x += N) {
+        const std::size_t i = row + std::size_t(x);
+        const VF zc = hn::Load(d, z + i);
+        const VF centre = hn::Load(d, src + i);
+        const MF valid = hn::Lt(zc, inf);
+        if (hn::AllFalse(d, valid)) {
+            hn::Store(centre, d, dst + i);
+            continue;
+        }
+        const VF zs = hn::IfThenElse(valid, zc, one);
+        const VF cx = hn::Add(hn::ConvertTo(d, hn::Add(hn::Iota(di, 0), hn::Set(di, x))), half);
+        const VF sx = hn::MulAdd(cx, ax, bx);
+        const V3 nrm{hn::Load(d, g.n[0] + i), hn::Load(d, g.n[1] + i), hn::Load(d, g.n[2] + i)};
+        // Distance of a neighbour q from the centre's tangent plane:
+        // n . (q - p). Perspective: q = (sx_q z_q, sy_q z_q, z_q).
+        const VF planeP = Dot(nrm, persp ? V3{hn::Mul(sx, zs), hn::Mul(sy, zs), zs} : V3{sx, sy, zs});
+        VF sigma = s.radiusInImageHeight
+                       ? hn::Mul(hn::Set(d, radiusScale * g.pixelScale), persp ? zs : one)
+                       : hn::Set(d, 0.1f * s.radius);
+        const VF inv = hn::IfThenElseZero(hn::Gt(sigma, zero), hn::Div(one, hn::Mul(sigma, sigma)));
+        VF sum = hn::Mul(hn::Set(d, spatial[0]), centre), weight = hn::Set(d, spatial[0]);
+        for (int k = -radius; k <= radius; ++k) {
+            if (k == 0) continue;
+            const std::ptrdiff_t o = std::ptrdiff_t(k) * step;
+            const VF zq = hn::LoadU(d, z + std::ptrdiff_t(i) + o);
+            const MF ok = hn::And(valid, hn::Lt(zq, inf));
+            if (hn::AllFalse(d, ok)) continue;
+            VF qx = sx, qy = sy;
+            if (vertical)
+                qy = hn::Set(d, g.ay * (float(y + k) + 0.5f) + g.by);
+            else
+                qx = hn::MulAdd(hn::Add(cx, hn::Set(d, float(k))), ax, bx);
+            const VF zqs = hn::IfThenElse(ok, zq, one);
+            const V3 q = persp ? V3{hn::Mul(qx, zqs), hn::Mul(qy, zqs), zqs} : V3{qx, qy, zqs};
+            const VF plane = hn::Sub(Dot(nrm, q), planeP);
+            const VF w = hn::Mul(hn::Set(d, spatial[std::size_t(std::abs(k))]),
+                                 hn::Exp(d, hn::Neg(hn::Mul(hn::Mul(plane, plane), inv))));
+            const VF wk = hn::IfThenElseZero(ok, w);
+            sum = hn::MulAdd(wk, hn::LoadU(d, src + std::ptrdiff_t(i) + o), sum);
+            weight = hn::Add(weight, wk);
+        }
+        hn::Store(hn::IfThenElse(valid, hn::Div(sum, weight), centre), d, dst + i);
+    }
 }
 
-}  // namespace
+}  // namespace darkroom::ssao::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
 
-void bilateralBlur(const PixelGeometry& g, const AoSettings& s, int radius, Context& ctx, float* ao) {
-    if (radius <= 0) return;
+#if HWY_ONCE
+namespace darkroom::ssao {
+
+HWY_EXPORT(BlurRow);
+
+std::vector<float> blurWeights(int radius) {
     std::vector<float> spatial(std::size_t(radius) + 1);
     const float sigma = 0.5f * float(radius);
     for (int k = 0; k <= radius; ++k) spatial[std::size_t(k)] = std::exp(-0.5f * float(k * k) / (sigma * sigma));
-    std::vector<float> tmp(g.points.size());
-    blurPass(g, s, spatial, 1, 0, ctx, ao, tmp.data());
-    blurPass(g, s, spatial, 0, 1, ctx, tmp.data(), ao);
+    return spatial;
+}
+
+void blurRows(const Frame& g, const AoSettings& s, const std::vector<float>& spatial, bool vertical, int y0, int y1,
+              const float* src, float* dst) {
+    const int radius = int(spatial.size()) - 1;
+    for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(BlurRow)(g, s, spatial.data(), radius, vertical, y, src, dst);
 }
 
 }  // namespace darkroom::ssao
+#endif  // HWY_ONCE

@@ -2,18 +2,23 @@
 
 #include "ao_estimators.h"
 #include "bilateral_blur.h"
-#include "pixel_geometry.h"
+#include "finish.h"
+#include "frame.h"
+#include "half_resolution.h"
 
 #include <darkroom/error.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace darkroom {
 
 PortList Ssao::ports() const {
     return {image_,     method_, geometry_,  radius_, radiusUnits_, samples_, slices_, steps_,    falloff_,
-            bias_,      thickness_, intensity_, power_, seed_,      blurRadius_, useNormals_, result_};
+            bias_,      thickness_, intensity_, power_, seed_,      blurRadius_, resolution_, useNormals_, result_};
 }
 
 void Ssao::execute(Context& ctx) {
@@ -25,7 +30,7 @@ void Ssao::execute(Context& ctx) {
             ? !(camera.fovYDegrees > 0 && camera.fovYDegrees < 180)
             : !(camera.viewHeight > 0))
         throw Error("the image's camera has an invalid field of view or view height");
-    const int w = in->width(), h = in->height();
+    const int h = in->height();
 
     AoSettings s;
     s.radius = float(ctx.get(radius_));
@@ -50,21 +55,55 @@ void Ssao::execute(Context& ctx) {
         return;
     }
 
-    const PixelGeometry g = buildPixelGeometry(*in, camera, ctx.get(useNormals_), ctx);
+    const int blurRadius = int(ctx.get(blurRadius_));
+    const bool hemisphere = ctx.get(method_) == Method::Hemisphere;
+    const Frame g = buildFrame(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
     ctx.progress(0.1);
-    if (ctx.get(method_) == Method::Hemisphere)
-        hemisphereAO(g, s, ctx, ao);
-    else
-        horizonAO(g, s, ctx, ao);
+    // Raw AO (and the blur's or the half resolution's intermediate) in
+    // padded planes, whose padding reads as unoccluded: the blur reads past
+    // the borders.
+    const bool half = ctx.get(resolution_) == Resolution::Half;
+    s.interleave = half;
+    const auto scratch = g.allocatePlanes(ctx, blurRadius > 0 || half ? 2 : 1);
+    float* raw = scratch->writeFloat("plane0");
+    float* tmp = blurRadius > 0 || half ? scratch->writeFloat("plane1") : nullptr;
+    g.fillPadding(raw, -g.padY, 0, 1.0f);
+    g.fillPadding(raw, h, h + g.padY, 1.0f);
+    if (tmp) {
+        g.fillPadding(tmp, -g.padY, 0, 1.0f);
+        g.fillPadding(tmp, h, h + g.padY, 1.0f);
+    }
+    auto estimateRows = hemisphere ? hemisphereAO : horizonAO;
+    auto estimateAt = hemisphere ? hemisphereAOAt : horizonAOAt;
+    if (!half) {
+        ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+            g.fillPadding(raw, y0, y1, 1.0f);
+            if (tmp) g.fillPadding(tmp, y0, y1, 1.0f);
+            estimateRows(g, s, y0, y1, raw);
+        });
+    } else {
+        // Even rows at even x into tmp, then every row of raw from them.
+        std::vector<std::int32_t> even;
+        for (int x = 0; x < in->width(); x += 2) even.push_back(x);
+        ctx.parallelFor(0, (h + 1) / 2, 2, [&](int r0, int r1) {
+            for (int r = r0; r < r1; ++r) {
+                g.fillPadding(tmp, 2 * r, std::min(2 * r + 2, h), 1.0f);
+                estimateAt(g, s, 2 * r, even.data(), int(even.size()), tmp);
+            }
+        });
+        ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
+            std::vector<std::int32_t> missing(std::size_t(in->width()));
+            g.fillPadding(raw, y0, y1, 1.0f);
+            for (int y = y0; y < y1; ++y) estimateAt(g, s, y, missing.data(), fillRow(g, y, tmp, raw, missing.data()), raw);
+        });
+    }
     ctx.progress(0.8);
-    bilateralBlur(g, s, int(ctx.get(blurRadius_)), ctx, ao);
-    ctx.parallelFor(0, h, 64, [&](int y0, int y1) {
-        for (std::size_t i = std::size_t(y0) * std::size_t(w); i < std::size_t(y1) * std::size_t(w); ++i) {
-            float a = std::clamp(1.0f - intensity * (1.0f - ao[i]), 0.0f, 1.0f);
-            if (power != 1.0f) a = std::pow(a, power);
-            ao[i] = g.valid[i] && std::isfinite(a) ? a : 1.0f;
-        }
-    });
+    if (blurRadius > 0) {
+        const std::vector<float> spatial = blurWeights(blurRadius);
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, false, y0, y1, raw, tmp); });
+        ctx.parallelFor(0, h, 8, [&](int y0, int y1) { blurRows(g, s, spatial, true, y0, y1, tmp, raw); });
+    }
+    ctx.parallelFor(0, h, 64, [&](int y0, int y1) { finishRows(g, raw, intensity, power, y0, y1, ao); });
     ctx.progress(1.0);
     ctx.set(result_, out);
 }

@@ -1,5 +1,6 @@
 // SSAO: robustness (background, 1x1, NaN/inf, particles), pass-through,
-// thread-count determinism, the points geometry's halo removal, and errors.
+// determinism (thread count, SIMD target), the points geometry's halo
+// removal, half resolution at silhouettes, and errors.
 #include "analytic_scenes.h"
 
 #include <darkroom/capture_backend.h>
@@ -9,6 +10,7 @@
 #include <darkroom/framework/scene/generators.h>
 
 #include <gmock/gmock.h>
+#include <hwy/targets.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,16 +34,19 @@ BufferPtr runSsao(const BufferPtr& image, Inputs params = {}, int threads = 2) {
     return runFilter(*f, params, o).outputs.at("image").asImage();
 }
 
-// Every combination of method and geometry mode.
+// Every combination of method, geometry mode and resolution.
 std::vector<Inputs> allModes() {
     std::vector<Inputs> modes;
     for (const char* m : {"hemisphere", "horizon"})
-        for (const char* g : {"surface", "points"}) modes.push_back({{"method", {Value(m)}}, {"geometry", {Value(g)}}});
+        for (const char* g : {"surface", "points"})
+            for (const char* r : {"full", "half"})
+                modes.push_back({{"method", {Value(m)}}, {"geometry", {Value(g)}}, {"resolution", {Value(r)}}});
     return modes;
 }
 
 std::string describe(const Inputs& p) {
-    return p.at("method")[0].asString() + "/" + p.at("geometry")[0].asString();
+    return p.at("method")[0].asString() + "/" + p.at("geometry")[0].asString() + "/" +
+           p.at("resolution")[0].asString();
 }
 
 // AO finite and in [0, 1] everywhere, exactly 1 where depth is not a valid
@@ -129,6 +134,24 @@ TEST(Ssao, OneAndFourThreadsGiveIdenticalBuffers) {
     }
 }
 
+// The kernels are compiled for AVX2 and AVX-512 and chosen at run time; both
+// must give the same bits, or pinned pictures would depend on the CPU.
+TEST(Ssao, Avx2AndAvx512GiveIdenticalBuffers) {
+    const std::int64_t supported = hwy::SupportedTargets();
+    if (!(supported & HWY_AVX3) || !(supported & HWY_AVX2)) GTEST_SKIP() << "this CPU lacks AVX-512 or AVX2";
+    const Camera cam = lookAt({3.2, 2.6, 3.5}, {0.6, 0.2, 0}, 90, 70, 50);
+    const auto z = depthImage(cam, cornerHit);
+    for (auto mode : allModes()) {
+        mode["falloff"] = {Value(0.3)};  // both weight regimes
+        hwy::SetSupportedTargetsForTest(HWY_AVX3 | HWY_AVX2);
+        const BufferPtr wide = runSsao(z, mode);
+        hwy::SetSupportedTargetsForTest(HWY_AVX2);
+        const BufferPtr narrow = runSsao(z, mode);
+        hwy::SetSupportedTargetsForTest(0);
+        EXPECT_TRUE(identical(*wide, *narrow)) << describe(mode);
+    }
+}
+
 TEST(Ssao, PassesEveryChannelThroughAndAddsAO) {
     auto img = test::makeImage(6, 4, {"Z", "R", "G", "B", "A", "value"},
                                [](int x, int y, int c) { return c == 0 ? 2.0f + 0.1f * x : 0.1f * float(x + y + c); });
@@ -183,6 +206,50 @@ TEST(Ssao, PointsGeometryIgnoresOccludersBeyondTheThickness) {
         EXPECT_GE(lowestWallAO(*wallAO(0.15, method, "points", 0.1)), 0.999f) << method;
         EXPECT_LT(lowestWallAO(*wallAO(0.15, method, "surface", 0.1)), 0.95f) << method;
     }
+}
+
+// Half resolution fills a pixel only from computed neighbours on its own
+// surface: next to a silhouette, where occlusion jumps (a sphere 0.15 in front
+// of a wall darkens the wall around it, its own rim stays light), the wall
+// keeps the occlusion full resolution gives it, instead of the mix a plain
+// upsampling would make.
+TEST(Ssao, HalfResolutionDoesNotBleedAcrossSilhouettes) {
+    const Camera cam = lookAt({0, 0, 6}, {0, 0, 0}, 160, 160, 30);
+    const auto z = depthImage(cam, [](const Vec3& o, const Vec3& d) {
+        return std::min(sphereHit(o, d, {0, 0, 0.65}, 0.5), planeHit(o, d, {0, 0, 0}, {0, 0, 1}));
+    });
+    Inputs p{{"method", {Value("horizon")}},   {"radiusUnits", {Value("world")}}, {"radius", {Value(1.0)}},
+             {"slices", {Value(std::int64_t(8))}}, {"steps", {Value(std::int64_t(16))}}, {"blurRadius", {Value(0)}},
+             {"resolution", {Value("full")}}};
+    const BufferPtr full = runSsao(z, p);
+    p["resolution"] = {Value("half")};
+    const BufferPtr half = runSsao(z, p);
+    // Wall pixels with a sphere pixel among their 8 neighbours, and those
+    // sphere pixels.
+    const float* depth = z->hostFloat("Z");
+    auto wall = [&](int x, int y) { return depth[std::size_t(y) * 160 + x] > 5.9f; };
+    double fullWall = 0, halfWall = 0, fullRim = 0, halfRim = 0;
+    int walls = 0, rims = 0;
+    for (int y = 1; y < 159; ++y)
+        for (int x = 1; x < 159; ++x) {
+            bool mixed = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) mixed = mixed || wall(x + dx, y + dy) != wall(x, y);
+            if (!mixed) continue;
+            const std::size_t i = std::size_t(y) * 160 + x;
+            const float f = full->hostFloat("AO")[i], h = half->hostFloat("AO")[i];
+            if (wall(x, y)) fullWall += f, halfWall += h, ++walls;
+            else fullRim += f, halfRim += h, ++rims;
+        }
+    ASSERT_GT(walls, 100);
+    ASSERT_GT(rims, 100);
+    fullWall /= walls, halfWall /= walls, fullRim /= rims, halfRim /= rims;
+    std::printf("[silhouette] wall ring AO: full %.4f half %.4f; sphere rim: full %.4f half %.4f\n", fullWall, halfWall,
+                fullRim, halfRim);
+    // The jump is large, so a mix would show.
+    ASSERT_GT(fullRim - fullWall, 0.2);
+    EXPECT_NEAR(halfWall, fullWall, 0.02);
+    EXPECT_NEAR(halfRim, fullRim, 0.02);
 }
 
 TEST(Ssao, MissingCameraOrDepthIsAnError) {

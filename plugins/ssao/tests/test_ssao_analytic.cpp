@@ -82,8 +82,9 @@ TEST(SsaoAnalytic, TiltedPlaneIsUnoccluded) {
         }
         const auto z = depthImage(cam, [&](const Vec3& o, const Vec3& d) { return planeHit(o, d, {0, 0, 0}, normal); });
         for (const char* method : {"hemisphere", "horizon"})
-            for (const char* units : {"imageHeight", "world"}) {
-                Inputs p{{"method", {Value(method)}}, {"radiusUnits", {Value(units)}}};
+            for (const char* units : {"imageHeight", "world"})
+                for (const char* resolution : {"full", "half"}) {
+                Inputs p{{"method", {Value(method)}}, {"radiusUnits", {Value(units)}}, {"resolution", {Value(resolution)}}};
                 if (std::string(units) == "world") p["radius"] = {Value(0.5)};
                 const BufferPtr out = runSsao(z, p);
                 const float* ao = out->hostFloat("AO");
@@ -91,8 +92,9 @@ TEST(SsaoAnalytic, TiltedPlaneIsUnoccluded) {
                 std::size_t at = 0;
                 for (std::size_t i = 0; i < out->pixelCount(); ++i)
                     if (std::fabs(ao[i] - 1.0f) > worst) worst = std::fabs(ao[i] - 1.0f), at = i;
-                EXPECT_LE(worst, 0.02f) << method << ", " << units << (ortho ? ", orthographic" : ", perspective");
-                std::printf("[plane] %s %s %s: max |AO - 1| = %.5f at (%d, %d)\n", method, units,
+                EXPECT_LE(worst, 0.02f) << method << ", " << units << ", " << resolution
+                                        << (ortho ? ", orthographic" : ", perspective");
+                std::printf("[plane] %s %s %s %s: max |AO - 1| = %.5f at (%d, %d)\n", method, units, resolution,
                             ortho ? "orthographic" : "perspective", worst, int(at % 160), int(at / 160));
             }
     }
@@ -116,9 +118,12 @@ TEST(SsaoAnalytic, FloorAtTheFootOfAWallMatchesCosineWeightedAO) {
     struct Case {
         const char* method;
         double tolerance;
+        const char* resolution;
     };
-    for (const Case& c : {Case{"horizon", 0.05}, Case{"hemisphere", 0.10}}) {
+    for (const Case& c : {Case{"horizon", 0.05, "full"}, Case{"hemisphere", 0.10, "full"},
+                          Case{"horizon", 0.05, "half"}, Case{"hemisphere", 0.10, "half"}}) {
         const BufferPtr out = runSsao(z, {{"method", {Value(c.method)}},
+                                          {"resolution", {Value(c.resolution)}},
                                           {"radiusUnits", {Value("world")}},
                                           {"radius", {Value(R)}},
                                           {"falloff", {Value(0.0)}},
@@ -150,10 +155,10 @@ TEST(SsaoAnalytic, FloorAtTheFootOfAWallMatchesCosineWeightedAO) {
             got /= count;
             want /= count;
             worst = std::max(worst, std::fabs(got - want));
-            EXPECT_NEAR(got, want, c.tolerance) << c.method << " at d/R = " << k;
-            std::printf("[corner] %s d/R=%.2f: AO %.4f, reference %.4f, error %+.4f\n", c.method, k, got, want,
-                        got - want);
+            EXPECT_NEAR(got, want, c.tolerance) << c.method << " " << c.resolution << " at d/R = " << k;
+            std::printf("[corner] %s %s d/R=%.2f: AO %.4f, reference %.4f, error %+.4f\n", c.method, c.resolution, k,
+                        got, want, got - want);
         }
-        std::printf("[corner] %s: max error %.4f\n", c.method, worst);
+        std::printf("[corner] %s %s: max error %.4f\n", c.method, c.resolution, worst);
     }
 }
