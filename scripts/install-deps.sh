@@ -12,6 +12,8 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
+  # SIMD kernels (Google Highway)
+  libhwy-dev
   # the editor (Qt Widgets, OpenGL and OpenGLWidgets, QTest), the X platform
   # plugin and Mesa's software OpenGL (llvmpipe), fonts for its labels, and a
   # virtual X server for the GUI tests

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <set>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -15,7 +16,10 @@ namespace {
 Registry& registry() {
     static Registry* r = [] {
         auto* x = new Registry();
-        x->loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
+        // DARKROOM_BENCH_PLUGIN_DIR in the environment times another build's
+        // plugins (e.g. a copy of the tree before a change) with this harness.
+        const char* dir = std::getenv("DARKROOM_BENCH_PLUGIN_DIR");
+        x->loadPlugins({dir && *dir ? dir : DARKROOM_BENCH_PLUGIN_DIR});
         return x;
     }();
     return *r;
