@@ -23,6 +23,7 @@ BufferPtr syntheticGBuffer(int size);
 //               read + output channels written) bytes, the memcpy run before
 //               every iteration so that both see the same machine load
 //   median_ms   median pass time
+//   cpu_ms      median CPU time of the process (all threads) per pass
 // `channelsRead` is how many float channels of the input the pass reads.
 void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
              const std::map<std::string, Value>& parameters = {});
