@@ -148,11 +148,7 @@ void SecondPass(const WorkImage& w, const HexagonSteps& steps, const Ring& ring,
                 auto at = [&](int g) { return hn::LoadU(d, ring.field(y + o[1], f + g) + col + o[0]); };
                 const VF weight = at(4);
                 const MF use = hn::AndNot(hn::Or(hn::Eq(weight, zero), hn::Gt(hn::Set(d, float(t)), hn::Add(at(kReach), half))), inside);
-                nearL.r = hn::Add(nearL.r, hn::IfThenElseZero(use, at(0)));
-                nearL.g = hn::Add(nearL.g, hn::IfThenElseZero(use, at(1)));
-                nearL.b = hn::Add(nearL.b, hn::IfThenElseZero(use, at(2)));
-                nearL.a = hn::Add(nearL.a, hn::IfThenElseZero(use, at(3)));
-                nearL.weight = hn::Add(nearL.weight, hn::IfThenElseZero(use, weight));
+                nearL.addWhere(use, at);
             }
         const MF unchanged = hn::And(hn::Lt(rp, focus), hn::Eq(nearL.weight, zero));
         const VF self[4] = {hn::LoadU(d, w.r.data() + i), hn::LoadU(d, w.g.data() + i), hn::LoadU(d, w.b.data() + i),
@@ -173,12 +169,7 @@ void SecondPass(const WorkImage& w, const HexagonSteps& steps, const Ring& ring,
                     const VF wq = BackgroundWeight(sp, rp, hn::IfThenElseZero(inside, sq), tv);
                     const MF use = hn::And(hn::And(inside, hn::Le(tv, nBack)), hn::Gt(wq, zero));
                     const int f = k == 1 ? kBackA : kBackS;
-                    auto at = [&](int g) { return hn::LoadU(d, ring.field(y + o2[1], f + g) + col + o2[0]); };
-                    backL.r = hn::Add(backL.r, hn::IfThenElseZero(use, at(0)));
-                    backL.g = hn::Add(backL.g, hn::IfThenElseZero(use, at(1)));
-                    backL.b = hn::Add(backL.b, hn::IfThenElseZero(use, at(2)));
-                    backL.a = hn::Add(backL.a, hn::IfThenElseZero(use, at(3)));
-                    backL.weight = hn::Add(backL.weight, hn::IfThenElseZero(use, at(4)));
+                    backL.addWhere(use, [&](int g) { return hn::LoadU(d, ring.field(y + o2[1], f + g) + col + o2[0]); });
                 }
         }
         Finish(out, o, count, nearL, backL, self[0], self[1], self[2], self[3], unchanged);

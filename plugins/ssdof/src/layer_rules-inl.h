@@ -78,6 +78,15 @@ struct Layer {
         a = hn::Add(a, hn::Mul(w, ca));
         weight = hn::Add(weight, w);
     }
+    // Adds partial sums (colour and weight, Rgba::add with weight 1) where `use` is set.
+    template <class At>
+    HWY_INLINE void addWhere(MF use, const At& at) {
+        r = hn::Add(r, hn::IfThenElseZero(use, at(0)));
+        g = hn::Add(g, hn::IfThenElseZero(use, at(1)));
+        b = hn::Add(b, hn::IfThenElseZero(use, at(2)));
+        a = hn::Add(a, hn::IfThenElseZero(use, at(3)));
+        weight = hn::Add(weight, hn::IfThenElseZero(use, at(4)));
+    }
 };
 
 // composite (alpha_F = min(1, near weight)) and the straight-alpha output of
