@@ -21,10 +21,12 @@
 // out = alpha_F * F + (1 - alpha_F) * B, in premultiplied RGBA.
 // The rules in code are in layer_rules-inl.h.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace darkroom {
 class Context;
+class WritableBuffer;
 }
 
 namespace darkroom::ssdof {
@@ -43,11 +45,17 @@ constexpr int kTile = 16;
 // colour 0 there) so that a tap never leaves the planes: a tap outside the
 // image is one whose CoC is NaN.
 struct WorkImage {
+    // One padded plane (in `storage`, from the host's pool).
+    struct Plane {
+        float* values = nullptr;
+        float* data() const { return values; }
+    };
     int width = 0, height = 0;
     int pad = 0;     // at least the largest tap offset of either gather
     int stride = 0;  // floats per padded row (room for a vector past the right border)
-    std::vector<float> r, g, b, a;  // premultiplied colour, non-finite components replaced by 0
-    std::vector<float> coc;         // signed CoC radius, pixels
+    Plane r, g, b, a;  // premultiplied colour, non-finite components replaced by 0
+    Plane coc;         // signed CoC radius, pixels
+    std::shared_ptr<WritableBuffer> storage;
     std::vector<float> nearReach;   // per tile: largest near-field |CoC| that can reach it
     int tilesX = 0;
 

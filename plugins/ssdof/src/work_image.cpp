@@ -9,6 +9,7 @@
 #include "coc.h"
 #include "layers.h"
 
+#include <darkroom/buffer.h>
 #include <darkroom/context.h>
 
 #include <algorithm>
@@ -118,10 +119,29 @@ bool buildWorkImage(Context& ctx, const float* const rgba[4], const float* z, in
     // 16 floats past the right border.
     w.pad = int(std::ceil(std::min(lens.maxBlur, 1e6))) + 2;
     w.stride = width + 2 * w.pad + 16;
-    const std::size_t size = std::size_t(w.stride) * std::size_t(height + 2 * w.pad);
-    for (auto* p : {&w.r, &w.g, &w.b, &w.a}) p->assign(size, 0.0f);
-    w.coc.assign(size, std::numeric_limits<float>::quiet_NaN());  // NaN: outside the image
-    float* const planes[5] = {w.r.data(), w.g.data(), w.b.data(), w.a.data(), w.coc.data()};
+    // Planes from the host's pool (no page faults when the pass runs again);
+    // the image's pixels are all written below, the padding here: colour 0,
+    // CoC NaN (outside the image).
+    w.storage = ctx.allocate(w.stride, height + 2 * w.pad, {"R", "G", "B", "A", "CoC"}, Fill::None);
+    WorkImage::Plane* views[5] = {&w.r, &w.g, &w.b, &w.a, &w.coc};
+    const char* names[5] = {"R", "G", "B", "A", "CoC"};
+    float* planes[5];
+    for (int c = 0; c < 5; ++c) planes[c] = views[c]->values = w.storage->writeFloat(names[c]);
+    const std::size_t rowFloats = std::size_t(w.stride);
+    ctx.parallelFor(0, height + 2 * w.pad, 64, [&](int y0, int y1) {
+        for (int c = 0; c < 5; ++c) {
+            const float outside = c == 4 ? std::numeric_limits<float>::quiet_NaN() : 0.0f;
+            for (int y = y0; y < y1; ++y) {
+                float* row = planes[c] + std::size_t(y) * rowFloats;
+                if (y < w.pad || y >= w.pad + height) {
+                    std::fill(row, row + rowFloats, outside);
+                } else {
+                    std::fill(row, row + w.pad, outside);
+                    std::fill(row + w.pad + width, row + rowFloats, outside);
+                }
+            }
+        }
+    });
     bool anyBlur = false;
     std::vector<char> rowBlur(std::size_t(height), 0);
     ctx.parallelFor(0, height, 16, [&](int y0, int y1) {
