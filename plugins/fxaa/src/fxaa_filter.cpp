@@ -81,13 +81,14 @@ void Fxaa::execute(Context& ctx) {
     const float* b = in->requireFloat("B");
     const float* a = in->hostFloat("A");  // optional; a uint32 "A" is just passed through
 
-    // Pass 1: luma of every pixel, NaN where it must not be blended.
-    // Not value-initialised: every entry is written below, and on large
-    // images zeroing would be a pass over memory of its own.
-    const std::unique_ptr<float[]> luma(new float[in->pixelCount()]);
+    // Pass 1: luma of every pixel, NaN where it must not be blended. A plane
+    // from the host's pool (no page faults when the pass runs again), not
+    // filled: every entry is written below.
+    const auto lumaPlane = ctx.allocate(w, h, {"luma"}, Fill::None);
+    float* const luma = lumaPlane->writeFloat("luma");
     ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
         const std::size_t begin = std::size_t(y0) * rowLength, end = std::size_t(y1) * rowLength;
-        fxaa::computeLuma(r, g, b, a, luma.get(), fxaa::lumaSpan(r, g, b, a, luma.get(), begin, end), end);
+        fxaa::computeLuma(r, g, b, a, luma, fxaa::lumaSpan(r, g, b, a, luma, begin, end), end);
     });
     ctx.progress(0.3);
 
@@ -98,7 +99,7 @@ void Fxaa::execute(Context& ctx) {
     auto out = ctx.derive(in, fresh, Fill::None);
     const ColourPlanes planes{r, g, b, a, out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B"),
                               a ? out->writeFloat("A") : nullptr};
-    const fxaa::LumaPlane plane{luma.get(), w, h};
+    const fxaa::LumaPlane plane{luma, w, h};
 
     // Pass 2: each pixel reads the luma around it and writes only itself, so
     // rows are independent and the result does not depend on the split.
