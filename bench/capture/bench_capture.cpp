@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -274,7 +275,10 @@ int main(int argc, char** argv) {
         const int threads = opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
 
         Registry registry;
-        const Diagnostics d = registry.loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
+        // DARKROOM_BENCH_PLUGIN_DIR in the environment times another build's
+        // backend (e.g. a copy of the tree before a change) with this harness.
+        const char* pluginDir = std::getenv("DARKROOM_BENCH_PLUGIN_DIR");
+        const Diagnostics d = registry.loadPlugins({pluginDir && *pluginDir ? pluginDir : DARKROOM_BENCH_PLUGIN_DIR});
         for (const auto& x : d) std::fprintf(stderr, "%s\n", x.str().c_str());
         auto backend = registry.createBackend("embree");
         FilterRunOptions ro;

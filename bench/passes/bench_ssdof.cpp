@@ -1,5 +1,7 @@
 #include "pass_bench.h"
 
+#include <string>
+
 // SSDoF on the synthetic terrain (depth 5 +- 0.2, ~37 % background), focused on
 // the centre; a lens of 1 world unit gives the terrain CoCs of a few pixels on
 // both sides of the focal plane and the background the clamped maximum, so
@@ -18,6 +20,7 @@ std::map<std::string, darkroom::Value> lens(const char* method, double maxBlur, 
 
 // Args: size, maxBlur, samples.
 static void BM_SSDoF_Disc(benchmark::State& state) {
+    state.SetLabel("maxBlur " + std::to_string(state.range(1)) + ", " + std::to_string(state.range(2)) + " taps");
     darkroom::bench::runPass(state, "SSDoF", int(state.range(0)), 5,
                              lens("disc", double(state.range(1)), int(state.range(2))));
 }
@@ -28,6 +31,7 @@ BENCHMARK(BM_SSDoF_Disc)
 
 // Args: size, maxBlur.
 static void BM_SSDoF_Hexagon(benchmark::State& state) {
+    state.SetLabel("maxBlur " + std::to_string(state.range(1)));
     darkroom::bench::runPass(state, "SSDoF", int(state.range(0)), 5,
                              lens("hexagon", double(state.range(1)), 32));
 }

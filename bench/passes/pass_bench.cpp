@@ -3,9 +3,12 @@
 #include <darkroom/framework/registry.h>
 #include <darkroom/framework/run_filter.h>
 
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <set>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -15,22 +18,42 @@ namespace {
 Registry& registry() {
     static Registry* r = [] {
         auto* x = new Registry();
-        x->loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
+        // DARKROOM_BENCH_PLUGIN_DIR in the environment times another build's
+        // plugins (e.g. a copy of the tree before a change) with this harness.
+        const char* dir = std::getenv("DARKROOM_BENCH_PLUGIN_DIR");
+        x->loadPlugins({dir && *dir ? dir : DARKROOM_BENCH_PLUGIN_DIR});
         return x;
     }();
     return *r;
 }
 
-double memcpySeconds(std::size_t bytes) {
-    std::vector<char> a(bytes, 1), b(bytes);
-    double best = 1e30;
-    for (int i = 0; i < 5; ++i) {
+// A memcpy of `bytes` between two buffers whose pages are already mapped.
+class MemcpyReference {
+public:
+    explicit MemcpyReference(std::size_t bytes) : a_(bytes, 1), b_(bytes, 2) {}
+    double seconds() {
         const auto t0 = std::chrono::steady_clock::now();
-        std::memcpy(b.data(), a.data(), bytes);
-        benchmark::DoNotOptimize(b.data());
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        std::memcpy(b_.data(), a_.data(), a_.size());
+        benchmark::DoNotOptimize(b_.data());
+        benchmark::ClobberMemory();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
-    return best;
+
+private:
+    std::vector<char> a_, b_;
+};
+
+// CPU time of the whole process (all threads), seconds.
+double processCpuSeconds() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 }  // namespace
 
@@ -91,17 +114,30 @@ void timePass(benchmark::State& state, Filter& filter, const std::map<std::strin
         if (const auto* b = std::get_if<BufferPtr>(&v.storage()); b && *b)
             for (const auto& c : (*b)->channels()) written += inputPlanes.count((*b)->plane(c.name).get()) ? 0 : 1;
     const std::size_t bytes = std::size_t(size) * size * 4 * (std::size_t(channelsRead) + written);
-    const double copy = memcpySeconds(bytes);
-    double total = 0;
+    // The memcpy runs before every iteration (outside the timed part), so the
+    // two see the same load of a shared machine; the ratio is of the medians.
+    MemcpyReference copy(bytes);
+    std::vector<double> passTimes, copyTimes, cpuTimes;
     for (auto _ : state) {
+        state.PauseTiming();
+        copyTimes.push_back(copy.seconds());
+        state.ResumeTiming();
+        const double c0 = processCpuSeconds();
         const auto t0 = std::chrono::steady_clock::now();
-        FilterRunResult r = runFilter(filter, inputs, o);
-        benchmark::DoNotOptimize(r);
-        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        {
+            FilterRunResult r = runFilter(filter, inputs, o);
+            benchmark::DoNotOptimize(r);
+        }
+        passTimes.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        cpuTimes.push_back(processCpuSeconds() - c0);
     }
-    const double per = total / double(state.iterations());
+    const double per = median(passTimes);
     state.counters["MP/s"] = double(size) * size / per / 1e6;
-    state.counters["vs_memcpy"] = per / copy;
+    state.counters["vs_memcpy"] = per / median(copyTimes);
+    state.counters["median_ms"] = per * 1e3;
+    // The work done, all threads together: steadier than wall time when other
+    // processes hold the cores (it also counts the pool's threads waiting for work).
+    state.counters["cpu_ms"] = median(cpuTimes) * 1e3;
     state.counters["bytes"] = double(bytes);
 }
 

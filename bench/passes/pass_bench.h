@@ -19,8 +19,11 @@ BufferPtr syntheticGBuffer(int size);
 // Runs filter `type` on `inputs` (image ports get syntheticGBuffer(size) when
 // not given) for every benchmark iteration, and sets counters:
 //   MP/s        megapixels per second
-//   vs_memcpy   pass time / time of a memcpy of (input channels read + output
-//               channels written) bytes, measured just before
+//   vs_memcpy   median pass time / median time of a memcpy of (input channels
+//               read + output channels written) bytes, the memcpy run before
+//               every iteration so that both see the same machine load
+//   median_ms   median pass time
+//   cpu_ms      median CPU time of the process (all threads) per pass
 // `channelsRead` is how many float channels of the input the pass reads.
 void runPass(benchmark::State& state, const std::string& type, int size, int channelsRead,
              const std::map<std::string, Value>& parameters = {});

@@ -4,6 +4,7 @@
 #include "flush_denormals.h"
 #include "gbuffer_writer.h"
 #include "nearest_hit_rule.h"
+#include "packet_rows.h"
 #include "primary_rays.h"
 
 #include <darkroom/error.h>
@@ -48,7 +49,8 @@ public:
         if (!(camera.halfHeight() > 0) || !std::isfinite(camera.halfHeight()))
             throw Error("embree capture: the camera's field of view / view height must be positive and finite");
 
-        auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request));
+        // Every pixel is written (hit or miss): no zero fill.
+        auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request), Fill::None);
         buffer->metadata().camera = camera;
         buffer->metadata().attributes["units.Z"] = "world";
         const GBufferWriter writer(bvh.objects(), request, *buffer);
@@ -60,11 +62,13 @@ public:
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
             NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
+            TileBuffer buffer = writer.tileBuffer();
             for (int tile = begin; tile < end; ++tile) {
-                if (ctx.cancelled()) return;
-                traceTile(scene, &ic, rays, writer, camera.width, camera.height, (tile % tilesX) * kTile,
+                if (ctx.cancelled()) break;
+                traceTile(scene, &ic, rays, writer, buffer, camera.width, camera.height, (tile % tilesX) * kTile,
                           (tile / tilesX) * kTile);
             }
+            finishRows();  // the streaming stores of this thread, before others read the planes
         });
         if (ctx.cancelled()) throw Cancelled();
         ctx.progress(1.0);
@@ -181,59 +185,80 @@ private:
         }
     }
 
-    static void traceTile(RTCScene scene, NearestHitContext* ic, const PrimaryRays& rays,
-                          const GBufferWriter& writer, int width, int height, int x0, int y0) {
-        alignas(32) RTCRayHit8 rh;
-        alignas(32) int valid[8];
+    // The packets of one tile into `buffer`, then the tile into the planes. A
+    // packet's G-buffer is written two packets after its trace: the indices of
+    // the primitives it hit are prefetched right after its trace, the field
+    // values at those indices one packet later, so both have arrived when the
+    // packet is written.
+    static void traceTile(RTCScene scene, NearestHitContext* ic, const PrimaryRays& rays, const GBufferWriter& writer,
+                          TileBuffer& buffer, int width, int height, int x0, int y0) {
+        static_assert(kTile == TileBuffer::kSize);
+        static_assert(RTC_INVALID_GEOMETRY_ID == GBufferWriter::kMissID);
+        struct Packet {
+            alignas(32) RTCRayHit8 rh;
+            alignas(32) int valid[8];
+            int cell[8];
+        };
+        constexpr int kInFlight = 3;
+        Packet packets[kInFlight];
+        for (Packet& p : packets)
+            for (int k = 0; k < 8; ++k) {  // what Embree does not change: set once for the tile
+                p.rh.ray.tnear[k] = 0.0f;
+                p.rh.ray.time[k] = 0.0f;
+                p.rh.ray.mask[k] = 0xFFFFFFFFu;
+                p.rh.ray.id[k] = unsigned(k);
+                p.rh.ray.flags[k] = 0;
+            }
+        auto hitsOf = [](Packet& p) {
+            RTCRayHit8& rh = p.rh;
+            return PacketHits{8, p.valid, rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
+                              {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z}, {rh.ray.org_x, rh.ray.org_y, rh.ray.org_z},
+                              {rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z}};
+        };
         const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
+        int traced = 0;
         for (int py = y0; py < y1; py += kPacketH) {
             for (int px = x0; px < x1; px += kPacketW) {
+                Packet& p = packets[traced % kInFlight];
+                RTCRayHit8& rh = p.rh;
                 // Edge tiles keep the packet shape and switch lanes off.
                 for (int k = 0; k < 8; ++k) {
                     const int x = px + k % kPacketW, y = py + k / kPacketW;
-                    valid[k] = (x < x1 && y < y1) ? -1 : 0;
+                    p.valid[k] = (x < x1 && y < y1) ? -1 : 0;
+                    p.cell[k] = (y - y0) * TileBuffer::kSize + (x - x0);
                     float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
-                    if (valid[k]) rays(x, y, o, d);
+                    if (p.valid[k]) rays(x, y, o, d);
                     rh.ray.org_x[k] = o[0];
                     rh.ray.org_y[k] = o[1];
                     rh.ray.org_z[k] = o[2];
                     rh.ray.dir_x[k] = d[0];
                     rh.ray.dir_y[k] = d[1];
                     rh.ray.dir_z[k] = d[2];
-                    rh.ray.tnear[k] = 0.0f;
                     rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
-                    rh.ray.time[k] = 0.0f;
-                    rh.ray.mask[k] = 0xFFFFFFFFu;
-                    rh.ray.id[k] = unsigned(k);
-                    rh.ray.flags[k] = 0;
                     rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
                     rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
                 }
                 ic->reset();
-                rtcIntersect8(valid, scene, &ic->context, &rh);
+                rtcIntersect8(p.valid, scene, &ic->context, &rh);
                 for (int k = 0; k < 8; ++k)
-                    if (valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
+                    if (p.valid[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
                         writer.prefetch(SurfaceHit{0.0f, rh.hit.geomID[k], rh.hit.primID[k], 0.0f, 0.0f, {}});
-                for (int k = 0; k < 8; ++k) {
-                    if (!valid[k]) continue;
-                    const std::size_t pixel =
-                        std::size_t(py + k / kPacketW) * std::size_t(width) + std::size_t(px + k % kPacketW);
-                    if (rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
-                        writer.miss(pixel);
-                        continue;
-                    }
-                    const SurfaceHit h{rh.ray.tfar[k],
-                                       rh.hit.geomID[k],
-                                       rh.hit.primID[k],
-                                       rh.hit.u[k],
-                                       rh.hit.v[k],
-                                       {rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]}};
-                    const float o[3] = {rh.ray.org_x[k], rh.ray.org_y[k], rh.ray.org_z[k]};
-                    const float d[3] = {rh.ray.dir_x[k], rh.ray.dir_y[k], rh.ray.dir_z[k]};
-                    writer.hit(pixel, h, o, d);
+                if (traced >= 1) {
+                    Packet& previous = packets[(traced - 1) % kInFlight];
+                    for (int k = 0; k < 8; ++k)
+                        if (previous.valid[k] && previous.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID)
+                            writer.prefetchFields(
+                                SurfaceHit{0.0f, previous.rh.hit.geomID[k], previous.rh.hit.primID[k], 0.0f, 0.0f, {}});
                 }
+                if (traced >= 2) {
+                    Packet& ready = packets[(traced - 2) % kInFlight];
+                    writer.packet(hitsOf(ready), ready.cell, buffer);
+                }
+                ++traced;
             }
         }
+        for (int i = std::max(0, traced - 2); i < traced; ++i) writer.packet(hitsOf(packets[i % kInFlight]), packets[i % kInFlight].cell, buffer);
+        writer.flush(buffer, x0, y0, x1 - x0, y1 - y0, width);
     }
 
     std::shared_ptr<Device> device_;

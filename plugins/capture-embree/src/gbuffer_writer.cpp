@@ -1,7 +1,10 @@
 #include "gbuffer_writer.h"
 
+#include "packet_rows.h"
+
 #include <darkroom/error.h>
 
+#include <algorithm>
 #include <set>
 
 namespace darkroom::embree {
@@ -31,8 +34,10 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
 
 GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request,
                              WritableBuffer& buffer) {
-    for (const auto& o : objects)
+    for (const auto& o : objects) {
         objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell});
+        hasPoints_ = hasPoints_ || o.representation == Representation::Points;
+    }
     z_ = buffer.writeFloat("Z");
     for (const auto& name : request.scalars) {
         scalars_.push_back(buffer.writeFloat(name));
@@ -52,6 +57,54 @@ GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const Captu
     }
     if (request.objectId) objectId_ = buffer.writeUInt("objectId");
     if (request.primitiveId) primitiveId_ = buffer.writeUInt("primitiveId");
+}
+
+void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& tile) const {
+    // Depth, normals, ids and the scalars' NaN for all lanes a vector at a
+    // time; then what differs per hit: sphere depth, the fields.
+    const std::size_t nScalars = scalars_.size();
+    float* scalarPlanes[64];
+    float** scalars = nScalars <= 64 ? scalarPlanes : nullptr;
+    std::vector<float*> many;
+    if (!scalars) {
+        many.resize(nScalars);
+        scalars = many.data();
+    }
+    for (std::size_t s = 0; s < nScalars; ++s) scalars[s] = tile.channel(1 + s) + cell[0];
+    PacketRowTargets t{tile.channel(0) + cell[0], {nullptr, nullptr, nullptr}, scalars, int(nScalars),
+                       objectId_ ? tile.objectId() + cell[0] : nullptr, primitiveId_ ? tile.primitiveId() + cell[0] : nullptr,
+                       TileBuffer::kSize};
+    if (n_[0])
+        for (std::size_t a = 0; a < 3; ++a) t.normal[a] = tile.channel(1 + nScalars + a) + cell[0];
+    writePacketRows(p, t);
+    if (nScalars == 0 && !hasPoints_) return;
+    const std::size_t nObjects = objects_.size();
+    for (int k = 0; k < p.lanes; ++k) {
+        if (!p.valid[k] || p.geomID[k] == kMissID) continue;
+        const std::size_t c = std::size_t(cell[k]);
+        const SurfaceHit h{p.t[k], p.geomID[k], p.primID[k], p.u[k], p.v[k], {p.ng[0][k], p.ng[1][k], p.ng[2][k]}};
+        const ObjectRef& o = objects_[h.geomID];
+        if (o.representation == Representation::Points) {
+            const float org[3] = {p.org[0][k], p.org[1][k], p.org[2][k]};
+            const float dir[3] = {p.dir[0][k], p.dir[1][k], p.dir[2][k]};
+            tile.channel(0)[c] = refineDepth(o, h, org, dir);
+        }
+        for (std::size_t s = 0; s < nScalars; ++s) tile.channel(1 + s)[c] = sample(o, fields_[s * nObjects + h.geomID], h);
+    }
+}
+
+void GBufferWriter::flush(const TileBuffer& tile, int x0, int y0, int w, int h, int imageWidth) const {
+    const std::size_t nScalars = scalars_.size();
+    const std::size_t at = std::size_t(y0) * std::size_t(imageWidth) + std::size_t(x0);
+    auto copy = [&](const void* from, void* plane) {
+        copyRows(from, TileBuffer::kSize, static_cast<char*>(plane) + 4 * at, std::size_t(imageWidth), w, h);
+    };
+    copy(tile.channel(0), z_);
+    for (std::size_t s = 0; s < nScalars; ++s) copy(tile.channel(1 + s), scalars_[s]);
+    if (n_[0])
+        for (std::size_t a = 0; a < 3; ++a) copy(tile.channel(1 + nScalars + a), n_[a]);
+    if (objectId_) copy(tile.objectId(), objectId_);
+    if (primitiveId_) copy(tile.primitiveId(), primitiveId_);
 }
 
 }  // namespace darkroom::embree

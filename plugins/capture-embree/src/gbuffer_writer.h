@@ -26,6 +26,42 @@ struct SurfaceHit {
     float ng[3];  // geometric normal, any length and orientation
 };
 
+// The lanes of one ray packet as the tracer reports them (structure of
+// arrays, e.g. views into Embree's RTCRayHit8), `lanes` long.
+struct PacketHits {
+    int lanes;
+    const int* valid;       // -1: lane in use
+    const float* t;
+    const unsigned* geomID;  // kMissID: no hit
+    const unsigned* primID;
+    const float *u, *v;
+    const float* ng[3];
+    const float* org[3];
+    const float* dir[3];
+};
+
+// The G-buffer of one tile (at most kSize x kSize pixels, row-major with
+// rows kSize apart), filled packet by packet and copied into the planes row
+// by row when the tile is done: the packets' scattered 2x4 blocks land in a
+// few cache lines, and the planes get whole rows.
+class TileBuffer {
+public:
+    static constexpr int kSize = 16;
+    explicit TileBuffer(std::size_t floatChannels, bool objectId, bool primitiveId)
+        : floats_(floatChannels * kSize * kSize), objectId_(objectId ? kSize * kSize : 0),
+          primitiveId_(primitiveId ? kSize * kSize : 0) {}
+    float* channel(std::size_t c) { return floats_.data() + c * kSize * kSize; }
+    const float* channel(std::size_t c) const { return floats_.data() + c * kSize * kSize; }
+    std::uint32_t* objectId() { return objectId_.data(); }
+    std::uint32_t* primitiveId() { return primitiveId_.data(); }
+    const std::uint32_t* objectId() const { return objectId_.data(); }
+    const std::uint32_t* primitiveId() const { return primitiveId_.data(); }
+
+private:
+    std::vector<float> floats_;
+    std::vector<std::uint32_t> objectId_, primitiveId_;
+};
+
 class GBufferWriter {
 public:
     static constexpr std::uint32_t kNoId = 0xFFFFFFFFu;
@@ -38,6 +74,21 @@ public:
     // `buffer` must have been allocated with channels(request).
     GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request, WritableBuffer& buffer);
 
+    static constexpr unsigned kMissID = 0xFFFFFFFFu;  // RTC_INVALID_GEOMETRY_ID
+
+    // A tile buffer for this writer's channels.
+    TileBuffer tileBuffer() const {
+        return TileBuffer(1 + scalars_.size() + (n_[0] ? 3 : 0), objectId_ != nullptr, primitiveId_ != nullptr);
+    }
+
+    // Lane k of a 4x2 packet `p` is pixel cell[k] of `tile` (y *
+    // TileBuffer::kSize + x; lanes 0-3 the first row, 4-7 the second): the
+    // same values hit() and miss() give.
+    void packet(const PacketHits& p, const int* cell, TileBuffer& tile) const;
+
+    // Copies the w x h tile into the planes at (x0, y0).
+    void flush(const TileBuffer& tile, int x0, int y0, int w, int h, int imageWidth) const;
+
     // Starts loading what hit() will read for this primitive, so that the
     // cache misses of the 8 lanes of a packet overlap instead of queueing.
     void prefetch(const SurfaceHit& h) const {
@@ -46,6 +97,27 @@ public:
         if (o.representation == Representation::Surface) __builtin_prefetch(o.indices + 3 * std::size_t(h.primID));
         else if (o.representation == Representation::Lines) __builtin_prefetch(o.indices + h.primID);
         else __builtin_prefetch(o.vertex(h.primID));
+    }
+
+    // After prefetch(): starts loading the field values hit() will interpolate
+    // (the primitive's indices have arrived by now).
+    void prefetchFields(const SurfaceHit& h) const {
+        const ObjectRef& o = objects_[h.geomID];
+        const std::size_t nObjects = objects_.size();
+        for (std::size_t s = 0; s < scalars_.size(); ++s) {
+            const FieldRef& f = fields_[s * nObjects + h.geomID];
+            if (!f.values) continue;
+            if (f.cell) {
+                __builtin_prefetch(f.values + (o.primitiveCell ? o.primitiveCell[h.primID] : h.primID));
+            } else if (o.representation == Representation::Surface) {
+                const std::uint32_t* i = o.indices + 3 * std::size_t(h.primID);
+                __builtin_prefetch(f.values + i[0]);
+                __builtin_prefetch(f.values + i[1]);
+                __builtin_prefetch(f.values + i[2]);
+            } else if (o.representation == Representation::Lines) {
+                __builtin_prefetch(f.values + o.indices[h.primID]);
+            }
+        }
     }
 
     void miss(std::size_t pixel) const {
@@ -65,14 +137,11 @@ public:
         for (std::size_t s = 0; s < scalars_.size(); ++s)
             scalars_[s][pixel] = sample(o, fields_[s * nObjects + h.geomID], h);
         if (n_[0]) {
-            float nx = h.ng[0], ny = h.ng[1], nz = h.ng[2];
-            const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
-            // Face the camera: shading passes expect normals on the visible side.
-            const float sign = (nx * dir[0] + ny * dir[1] + nz * dir[2]) > 0.0f ? -1.0f : 1.0f;
-            const float k = len > 0.0f ? sign / len : kNaN;
-            n_[0][pixel] = nx * k;
-            n_[1][pixel] = ny * k;
-            n_[2][pixel] = nz * k;
+            float n[3];
+            facingNormal(h.ng[0], h.ng[1], h.ng[2], dir[0], dir[1], dir[2], n);
+            n_[0][pixel] = n[0];
+            n_[1][pixel] = n[1];
+            n_[2][pixel] = n[2];
         }
         if (objectId_) objectId_[pixel] = h.geomID;
         if (primitiveId_) primitiveId_[pixel] = h.primID;
@@ -80,6 +149,17 @@ public:
 
 private:
     static constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+    // The unit geometric normal on the side facing the ray (shading passes
+    // expect normals on the visible side); NaN for a zero normal.
+    static void facingNormal(float nx, float ny, float nz, float dx, float dy, float dz, float n[3]) {
+        const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
+        const float sign = (nx * dx + ny * dy + nz * dz) > 0.0f ? -1.0f : 1.0f;
+        const float k = len > 0.0f ? sign / len : kNaN;
+        n[0] = nx * k;
+        n[1] = ny * k;
+        n[2] = nz * k;
+    }
 
     struct ObjectRef {
         Representation representation;
@@ -141,6 +221,7 @@ private:
     }
 
     std::vector<ObjectRef> objects_;
+    bool hasPoints_ = false;  // sphere hits have their depth refined
     std::vector<FieldRef> fields_;  // [scalar * objects + object]
     float* z_ = nullptr;
     std::vector<float*> scalars_;

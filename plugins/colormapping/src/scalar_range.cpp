@@ -1,5 +1,7 @@
 #include "scalar_range.h"
 
+#include "map_kernel.h"
+
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -14,9 +16,15 @@ ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth
         ScalarRange r;
         r.low = std::numeric_limits<double>::infinity();
         r.high = -r.low;
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < width; ++x) {
-                const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+        const std::size_t begin = std::size_t(y0) * std::size_t(width), end = std::size_t(y1) * std::size_t(width);
+        // A log scale's range is over positive values only: the plain loop.
+        if (s.f && !positiveOnly) {
+            const colormapping::MinMax m = colormapping::rangeSpan(s.f, depth, begin, end);
+            r.found = m.found;
+            r.low = m.low;
+            r.high = m.high;
+        } else {
+            for (std::size_t i = begin; i < end; ++i) {
                 if (depth && std::isinf(depth[i]) && depth[i] > 0) continue;
                 const double v = s[i];
                 if (!std::isfinite(v) || (positiveOnly && !(v > 0))) continue;
@@ -24,6 +32,7 @@ ScalarRange finiteRange(Context& ctx, const ScalarChannel& s, const float* depth
                 r.low = std::min(r.low, v);
                 r.high = std::max(r.high, v);
             }
+        }
         if (!r.found) return;
         // min and max are order independent, so merging chunks in any order is deterministic.
         std::lock_guard<std::mutex> g(mutex);

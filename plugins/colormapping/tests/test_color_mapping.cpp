@@ -1,4 +1,5 @@
 // ColorMapping through the plugin registry.
+#include "../../normals/tests/simd_targets.h"
 #include "test_support.h"
 
 #include <darkroom/colormap.h>
@@ -196,5 +197,32 @@ TEST(ColorMapping, LogScaleNeedsAPositiveManualRange) {
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("log scale needs a positive manual range"));
+    }
+}
+
+// The mapping and the range run vectors of pixels with the best SIMD
+// instructions of the CPU: every instruction set gives the same bits and the
+// same range (automatic, manual, reversed, empty), with NaN, ±inf and
+// background among the values.
+TEST(ColorMapping, ResultDoesNotDependOnTheSimdInstructionSet) {
+    const auto img = test::makeImage(67, 45, {"Z", "s"}, [](int x, int y, int c) {
+        if (c == 0) return (x * 7 + y) % 13 == 0 ? kInf : 1.0f;
+        if ((x * 31 + y * 17) % 101 == 0) return kNaN;
+        if ((x * 5 + y) % 97 == 0) return (x % 2 ? 1.0f : -1.0f) * kInf;
+        return std::sin(float(x) * 0.05f) * std::cos(float(y) * 0.03f);
+    });
+    for (const Inputs& p : {Inputs{},
+                            Inputs{{"range", {Value("manual")}}, {"minimum", {Value(-0.3)}}, {"maximum", {Value(0.6)}}},
+                            Inputs{{"range", {Value("manual")}}, {"minimum", {Value(0.6)}}, {"maximum", {Value(-0.3)}}},
+                            Inputs{{"range", {Value("manual")}}, {"minimum", {Value(0.1)}}, {"maximum", {Value(0.1)}}}}) {
+        const auto results = test::resultsPerSimdTarget([&] { return mapImage(img, p); });
+        for (const auto& [target, r] : results) {
+            EXPECT_TRUE(identical(*r.outputs.at("image").asImage(), *results.front().second.outputs.at("image").asImage()))
+                << target << " differs from " << results.front().first;
+            for (const char* v : {"usedMinimum", "usedMaximum"}) {
+                const double got = r.outputs.at(v).asFloat(), want = results.front().second.outputs.at(v).asFloat();
+                EXPECT_TRUE(got == want || (std::isnan(got) && std::isnan(want))) << v << " " << target;
+            }
+        }
     }
 }

@@ -1,10 +1,13 @@
 #include "compositing.h"
 
 #include "channel_union.h"
+#include "nearest_input.h"
 
 #include <darkroom/error.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -109,40 +112,38 @@ void Compositing::execute(Context& ctx) {
     const float inf = std::numeric_limits<float>::infinity();
     const std::uint32_t noId = 0xFFFFFFFFu;
     const int n = int(inputs.size());
-    // Row by row: choose the winners of a row, then copy each channel of it,
-    // so the depths and the winner list stay in cache.
+    // Row by row: choose the winners of a row, then copy each channel of it
+    // run by run (neighbouring pixels mostly come from the same input), so
+    // the depths and the winner list stay in cache and the copies are memcpys.
     ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
-        std::vector<int> winner(std::size_t(w), -1);
+        std::vector<int> winner(static_cast<std::size_t>(w));
+        std::vector<std::pair<int, int>> runs;  // (first pixel, winner)
+        std::vector<const float*> depthRow(depth.size());
         for (int y = y0; y < y1; ++y) {
             const std::size_t row = std::size_t(y) * std::size_t(w);
-            for (int x = 0; x < w; ++x) {
-                float best = inf;
-                int who = -1;
-                for (int k = 0; k < n; ++k) {
-                    const float z = depth[std::size_t(k)][row + std::size_t(x)];
-                    // Strictly nearer: ties keep the lower index; +inf, -inf and NaN never win.
-                    if (z < best && std::isfinite(z)) {
-                        best = z;
-                        who = k;
-                    }
-                }
-                winner[std::size_t(x)] = who;
-            }
+            for (std::size_t k = 0; k < depth.size(); ++k) depthRow[k] = depth[k] + row;
+            compositing::nearestInputs(depthRow.data(), n, w, winner.data());
+            runs.clear();
+            for (int x = 0; x < w; ++x)
+                if (x == 0 || winner[std::size_t(x)] != winner[std::size_t(x) - 1]) runs.emplace_back(x, winner[std::size_t(x)]);
+            runs.emplace_back(w, -1);
             for (ChannelSources& s : sources) {
-                if (s.outFloat) {
-                    const float bg = s.isDepth ? inf : backgroundFloat(s.desc.name);
-                    for (int x = 0; x < w; ++x) {
-                        const int k = winner[std::size_t(x)];
-                        const std::size_t i = row + std::size_t(x);
+                const float bg = s.isDepth ? inf : backgroundFloat(s.desc.name);
+                for (std::size_t r = 0; r + 1 < runs.size(); ++r) {
+                    const auto [x0, k] = runs[r];
+                    const std::size_t i = row + std::size_t(x0), count = std::size_t(runs[r + 1].first - x0);
+                    if (s.outFloat) {
                         const float* src = k < 0 ? nullptr : s.floats[std::size_t(k)];
-                        s.outFloat[i] = k < 0 ? bg : (src ? src[i] : nan);
-                    }
-                } else {
-                    for (int x = 0; x < w; ++x) {
-                        const int k = winner[std::size_t(x)];
-                        const std::size_t i = row + std::size_t(x);
+                        if (src)
+                            std::memcpy(s.outFloat + i, src + i, count * sizeof(float));
+                        else
+                            std::fill_n(s.outFloat + i, count, k < 0 ? bg : nan);
+                    } else {
                         const std::uint32_t* src = k < 0 ? nullptr : s.uints[std::size_t(k)];
-                        s.outUInt[i] = src ? src[i] : noId;
+                        if (src)
+                            std::memcpy(s.outUInt + i, src + i, count * sizeof(std::uint32_t));
+                        else
+                            std::fill_n(s.outUInt + i, count, noId);
                     }
                 }
             }

@@ -1,4 +1,5 @@
 // Compositing on hand-made inputs with known answers.
+#include "../../normals/tests/simd_targets.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
@@ -203,4 +204,22 @@ TEST(Compositing, ResultDoesNotDependOnTheThreadCount) {
     };
     const std::vector<BufferPtr> in = {make(1), make(2), make(3)};
     EXPECT_TRUE(identical(*compositeImage(in, 1), *compositeImage(in, 4)));
+}
+
+// The nearest input is chosen for vectors of pixels with the best SIMD
+// instructions of the CPU: every instruction set gives the same bits (ties,
+// background, NaN and -inf depths among the inputs).
+TEST(Compositing, ResultDoesNotDependOnTheSimdInstructionSet) {
+    auto make = [](int seed) {
+        return test::makeImage(71, 23, {"Z", "value"}, [seed](int x, int y, int c) {
+            const std::uint32_t hsh = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(seed * 83492791);
+            if (c == 1) return float(hsh % 1000);
+            if (hsh % 11 == 0) return hsh % 2 ? kNaN : -kInf;
+            return hsh % 7 == 0 ? kInf : float(hsh % 13);
+        });
+    };
+    const std::vector<BufferPtr> in = {make(1), make(2), make(3)};
+    const auto results = test::resultsPerSimdTarget([&] { return compositeImage(in); });
+    for (const auto& [target, out] : results)
+        EXPECT_TRUE(identical(*out, *results.front().second)) << target << " differs from " << results.front().first;
 }

@@ -2,6 +2,7 @@
 
 #include "fxaa_kernel.h"
 #include "fxaa_presets.h"
+#include "fxaa_simd.h"
 #include "luma.h"
 
 #include <darkroom/context.h>
@@ -80,12 +81,14 @@ void Fxaa::execute(Context& ctx) {
     const float* b = in->requireFloat("B");
     const float* a = in->hostFloat("A");  // optional; a uint32 "A" is just passed through
 
-    // Pass 1: luma of every pixel, NaN where it must not be blended.
-    // Not value-initialised: every entry is written below, and on large
-    // images zeroing would be a pass over memory of its own.
-    const std::unique_ptr<float[]> luma(new float[in->pixelCount()]);
+    // Pass 1: luma of every pixel, NaN where it must not be blended. A plane
+    // from the host's pool (no page faults when the pass runs again), not
+    // filled: every entry is written below.
+    const auto lumaPlane = ctx.allocate(w, h, {"luma"}, Fill::None);
+    float* const luma = lumaPlane->writeFloat("luma");
     ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
-        fxaa::computeLuma(r, g, b, a, luma.get(), std::size_t(y0) * rowLength, std::size_t(y1) * rowLength);
+        const std::size_t begin = std::size_t(y0) * rowLength, end = std::size_t(y1) * rowLength;
+        fxaa::computeLuma(r, g, b, a, luma, fxaa::lumaSpan(r, g, b, a, luma, begin, end), end);
     });
     ctx.progress(0.3);
 
@@ -96,26 +99,40 @@ void Fxaa::execute(Context& ctx) {
     auto out = ctx.derive(in, fresh, Fill::None);
     const ColourPlanes planes{r, g, b, a, out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B"),
                               a ? out->writeFloat("A") : nullptr};
-    const fxaa::LumaPlane plane{luma.get(), w, h};
+    const fxaa::LumaPlane plane{luma, w, h};
 
     // Pass 2: each pixel reads the luma around it and writes only itself, so
     // rows are independent and the result does not depend on the split.
+    auto filterPixel = [&](int x, int y) {
+        const std::size_t i = std::size_t(y) * rowLength + std::size_t(x);
+        if (std::isnan(luma[i])) {
+            planes.copy(i);  // NaN or transparent: kept as it is
+            return;
+        }
+        const fxaa::Blend d = fxaa::decide(plane, x, y, s);
+        const int nx = std::clamp(x + d.dx, 0, w - 1), ny = std::clamp(y + d.dy, 0, h - 1);
+        const std::size_t j = std::size_t(ny) * rowLength + std::size_t(nx);
+        if (d.amount > 0.0f && j != i && !std::isnan(luma[j]))
+            planes.blend(i, j, d.amount);
+        else
+            planes.copy(i);
+    };
+    const fxaa::ColourRows rows{{r, g, b, a}, {planes.outR, planes.outG, planes.outB, planes.outA}};
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * rowLength + std::size_t(x);
-                if (std::isnan(luma[i])) {
-                    planes.copy(i);  // NaN or transparent: kept as it is
-                    continue;
-                }
-                const fxaa::Blend d = fxaa::decide(plane, x, y, s);
-                const int nx = std::clamp(x + d.dx, 0, w - 1), ny = std::clamp(y + d.dy, 0, h - 1);
-                const std::size_t j = std::size_t(ny) * rowLength + std::size_t(nx);
-                if (d.amount > 0.0f && j != i && !std::isnan(luma[j]))
-                    planes.blend(i, j, d.amount);
-                else
-                    planes.copy(i);
+        // Inside the image, a vector of pixels at a time leaves the flat ones
+        // as they are; only the others go through the edge search.
+        std::vector<std::uint8_t> needsDecision(rowLength);
+        for (int y = y0; y < y1; ++y) {
+            int x = 0;
+            if (y > 0 && y < h - 1 && w > 2) {
+                filterPixel(0, y);
+                x = fxaa::flatSpan(plane, s, rows, y, 1, w - 1, needsDecision.data());
+                for (int k = 1; k < x; ++k)
+                    if (needsDecision[std::size_t(k)]) filterPixel(k, y);
+                x = std::max(x, 1);
             }
+            for (; x < w; ++x) filterPixel(x, y);
+        }
     });
     ctx.progress(1.0);
     ctx.set(result_, out);

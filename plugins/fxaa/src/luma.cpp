@@ -15,9 +15,9 @@ namespace {
 // is smooth down to 0 (the linear toe becomes 12.92 s^2), so linear
 // interpolation between 4096 entries is accurate to ~1e-7 while costing a
 // sqrt instead of a pow per channel.
-constexpr int kEntries = 4096;
+constexpr int kEntries = kEncodeEntries;
 
-const std::array<float, kEntries + 1>& encodeTable() {
+const std::array<float, kEntries + 1>& encodingTable() {
     static const auto table = [] {
         std::array<float, kEntries + 1> t{};
         for (int i = 0; i <= kEntries; ++i) {
@@ -45,11 +45,13 @@ inline float lumaOf(const std::array<float, kEntries + 1>& t, float r, float g, 
 
 }  // namespace
 
-float perceptualLuma(float r, float g, float b) { return lumaOf(encodeTable(), r, g, b); }
+const float* encodeTable() { return encodingTable().data(); }
+
+float perceptualLuma(float r, float g, float b) { return lumaOf(encodingTable(), r, g, b); }
 
 void computeLuma(const float* r, const float* g, const float* b, const float* alpha, float* luma,
                  std::size_t begin, std::size_t end) {
-    const auto& t = encodeTable();
+    const auto& t = encodingTable();
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (std::size_t i = begin; i < end; ++i)
         luma[i] = blendable(r[i], g[i], b[i], alpha, i) ? lumaOf(t, r[i], g[i], b[i]) : nan;

@@ -20,6 +20,11 @@ inline bool blendable(float r, float g, float b, const float* alpha, std::size_t
     return !alpha || alpha[i] > 0.0f;  // also rejects NaN alpha
 }
 
+// The sRGB encoding as a table over s = sqrt(linear), kEncodeEntries + 1
+// entries (luma.cpp); for the SIMD luma (fxaa_simd.cpp).
+constexpr int kEncodeEntries = 4096;
+const float* encodeTable();
+
 // luma[i] for i in [begin, end): perceptualLuma, or NaN where the pixel is not
 // blendable. `alpha` may be null.
 void computeLuma(const float* r, const float* g, const float* b, const float* alpha, float* luma,

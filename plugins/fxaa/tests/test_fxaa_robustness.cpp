@@ -1,5 +1,6 @@
 // FXAA on stress inputs: NaN, transparent and infinite pixels, tiny and empty
 // images, every preset, thread counts, pass-through channels, bad input.
+#include "../../normals/tests/simd_targets.h"
 #include "fxaa_helpers.h"
 
 #include <darkroom/error.h>
@@ -143,6 +144,25 @@ TEST(FxaaRobustness, ResultDoesNotDependOnTheThreadCount) {
         const BufferPtr one = runFxaa(img, {{"preset", {Value(preset)}}}, 1);
         const BufferPtr four = runFxaa(img, {{"preset", {Value(preset)}}}, 4);
         EXPECT_TRUE(identical(*one, *four)) << "preset " << preset;
+    }
+}
+
+// The luma and the contrast check run vectors of pixels with the best SIMD
+// instructions of the CPU: every instruction set gives the same bits, with
+// NaN, infinite, HDR and transparent pixels among the edges.
+TEST(FxaaRobustness, ResultDoesNotDependOnTheSimdInstructionSet) {
+    auto img = greyImage(83, 41, busy, true);
+    float* r = img->writeFloat("R");
+    float* a = img->writeFloat("A");
+    for (std::size_t i = 0; i < img->pixelCount(); i += 29) r[i] = i % 2 ? std::numeric_limits<float>::quiet_NaN() : 7.5f;
+    for (std::size_t i = 5; i < img->pixelCount(); i += 31) a[i] = i % 2 ? 0.0f : 0.5f;
+    r[100] = std::numeric_limits<float>::infinity();
+    const BufferPtr in = img;
+    for (const char* preset : {"10", "12", "39"}) {
+        const auto results = resultsPerSimdTarget([&] { return runFxaa(in, {{"preset", {Value(preset)}}}); });
+        for (const auto& [target, out] : results)
+            EXPECT_TRUE(identical(*out, *results.front().second)) << preset << ": " << target << " differs from "
+                                                                  << results.front().first;
     }
 }
 

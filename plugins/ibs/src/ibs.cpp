@@ -1,5 +1,6 @@
 #include "ibs.h"
 
+#include "shade.h"
 #include "silhouette.h"
 
 #include <darkroom/error.h>
@@ -7,51 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace darkroom {
-
-namespace {
-
-// Headlight term L = ambient + (1 - ambient) max(0, N.V), V the unit vector
-// from the surface to the eye, for every pixel with a surface; NaN elsewhere.
-std::vector<float> headlight(Context& ctx, const Buffer& in, const Camera& camera, double ambient) {
-    const int w = in.width(), h = in.height();
-    const std::size_t n = in.pixelCount();
-    const float* depth = in.hostFloat("Z");
-    std::vector<float> nv[3] = {std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
-    float* view[3] = {nv[0].data(), nv[1].data(), nv[2].data()};
-    const float* world[3] = {in.hostFloat("N.x"), in.hostFloat("N.y"), in.hostFloat("N.z")};
-    if (world[0] && world[1] && world[2]) {
-        worldToViewNormals(ctx, world, n, camera, view);  // captured normals are exact
-    } else {
-        NormalOutputs o;
-        std::copy(view, view + 3, o.view);
-        reconstructNormals(ctx, depth, w, h, camera, NormalMethod::Extrapolated, o);
-    }
-    const bool perspective = camera.projection == Camera::Projection::Perspective;
-    std::vector<float> light(n);
-    ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * w + x;
-                // Unit vector to the eye in view space (z forward, so the eye is at -z).
-                Vec3 v{0, 0, -1};
-                if (perspective) {
-                    double sx, sy;
-                    camera.planeOffsets(x + 0.5, y + 0.5, sx, sy);
-                    v = normalize(Vec3{-sx, -sy, -1});  // eye minus view position, unit
-                }
-                const double d = nv[0][i] * v.x + nv[1][i] * v.y + nv[2][i] * v.z;
-                // NaN normals (no surface, or NaN in captured N) stay NaN and
-                // are skipped by the caller.
-                light[i] = float(ambient + (1.0 - ambient) * std::max(0.0, d));
-                if (std::isnan(d)) light[i] = d;
-            }
-    });
-    return light;
-}
-
-}  // namespace
 
 void Ibs::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
@@ -78,32 +37,42 @@ void Ibs::execute(Context& ctx) {
     if (colour) fresh.insert(fresh.end(), {"R", "G", "B"});
     if (colour && alphaIn) fresh.push_back("A");
 
-    std::vector<float> light;
-    if (colour && lighting) light = headlight(ctx, *in, requireCamera(*in, "input 'image' (for lighting)"), ambient);
-    const std::vector<float> s = passes::silhouette(ctx, depth, ids, w, h, so);
-
     // Every fresh plane is written below.
     auto out = ctx.derive(in, fresh, Fill::None);
-    std::copy(s.begin(), s.end(), out->writeFloat("Silhouette"));
+    float* outline = out->writeFloat("Silhouette");
+    passes::silhouette(ctx, depth, ids, w, h, so, outline);
     if (colour) {
-        float* rgb[3] = {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B")};
-        float* alpha = alphaIn ? out->writeFloat("A") : nullptr;
-        const float c[3] = {color.r, color.g, color.b};
-        ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
-            for (std::size_t i = std::size_t(y0) * w; i < std::size_t(y1) * w; ++i) {
-                double v[3] = {rgbIn[0][i], rgbIn[1][i], rgbIn[2][i]};
-                // Lighting touches surfaces only; background keeps its colour.
-                if (!light.empty() && !std::isnan(light[i]))
-                    for (double& x : v) x *= luminance * light[i];
-                // Straight-alpha "over" of the outline colour with opacity k.
-                const double k = strength * double(color.a) * s[i];
-                const double a = alphaIn ? alphaIn[i] : 1.0;
-                const double ao = k + a * (1.0 - k);
-                for (int ch = 0; ch < 3; ++ch)
-                    rgb[ch][i] = ao > 0 ? float((c[ch] * k + v[ch] * a * (1.0 - k)) / ao) : float(v[ch]);
-                if (alpha) alpha[i] = float(ao);
+        passes::ShadeJob job;
+        job.width = w;
+        job.height = h;
+        std::copy(rgbIn, rgbIn + 3, job.rgb);
+        job.alpha = alphaIn;
+        job.silhouette = outline;
+        job.ambient = ambient;
+        job.luminance = luminance;
+        job.strength = strength;
+        job.color = color;
+        for (int k = 0; k < 3; ++k) job.out[k] = out->writeFloat(std::string(1, "RGB"[k]));
+        job.outAlpha = alphaIn ? out->writeFloat("A") : nullptr;
+        std::unique_ptr<float[]> reconstructed[3];
+        if (lighting) {
+            const Camera camera = requireCamera(*in, "input 'image' (for lighting)");
+            job.setView(camera);
+            const float* world[3] = {in->hostFloat("N.x"), in->hostFloat("N.y"), in->hostFloat("N.z")};
+            if (world[0] && world[1] && world[2]) {
+                std::copy(world, world + 3, job.normal);  // captured normals are exact
+                job.worldNormals = true;
+            } else {
+                NormalOutputs o;
+                for (int k = 0; k < 3; ++k) {
+                    reconstructed[k].reset(new float[in->pixelCount()]);
+                    o.view[k] = reconstructed[k].get();
+                    job.normal[k] = reconstructed[k].get();
+                }
+                reconstructNormals(ctx, depth, w, h, camera, NormalMethod::Extrapolated, o);
             }
-        });
+        }
+        passes::shade(ctx, job);
     }
     ctx.progress(1.0);
     ctx.set(result_, out);

@@ -1,7 +1,8 @@
 #include "silhouette.h"
 
+#include <algorithm>
 #include <cmath>
-#include <utility>
+#include <limits>
 
 namespace darkroom::passes {
 
@@ -22,43 +23,53 @@ bool nearOfEdge(float zp, float zq, std::uint32_t ip, std::uint32_t iq, bool use
 
 }  // namespace
 
-std::vector<float> silhouette(Context& ctx, const float* depth, const std::uint32_t* ids, int w, int h,
-                              const SilhouetteOptions& o) {
-    std::vector<float> out(std::size_t(w) * std::size_t(h), 0.0f);
+void silhouetteAt(const SilhouetteJob& job, int x, int y) {
+    const int w = job.width, h = job.height;
+    const std::size_t i = std::size_t(y) * w + x;
+    job.out[i] = 0.0f;
+    const float zp = job.depth[i];
+    if (!hasData(zp)) return;
+    const bool useIds = job.ids != nullptr;
+    const std::uint32_t ip = useIds ? job.ids[i] : 0;
+    for (const auto& [dx, dy] : job.disk) {
+        const int qx = x + dx, qy = y + dy;
+        if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+        const std::size_t j = std::size_t(qy) * w + qx;
+        const float zq = job.depth[j];
+        if (!hasData(zq)) continue;
+        const std::uint32_t iq = useIds ? job.ids[j] : 0;
+        const bool edge = job.nearSide ? nearOfEdge(zp, zq, ip, iq, useIds, job.threshold)
+                                       : nearOfEdge(zq, zp, iq, ip, useIds, job.threshold);
+        if (edge) {
+            job.out[i] = 1.0f;
+            return;
+        }
+    }
+}
+
+void silhouette(Context& ctx, const float* depth, const std::uint32_t* ids, int w, int h,
+                const SilhouetteOptions& o, float* out) {
+    SilhouetteJob job{depth, ids, w, h, {}, 0, o.depthThreshold, o.nearSide, out};
     // Disk of offsets, nearest first so most edge pixels stop early.
-    std::vector<std::pair<int, int>> disk;
     const int r = int(std::floor(o.width + 1e-9));
     for (int dy = -r; dy <= r; ++dy)
         for (int dx = -r; dx <= r; ++dx)
-            if ((dx || dy) && dx * dx + dy * dy <= o.width * o.width + 1e-9) disk.emplace_back(dx, dy);
-    std::stable_sort(disk.begin(), disk.end(), [](const auto& a, const auto& b) {
+            if ((dx || dy) && dx * dx + dy * dy <= o.width * o.width + 1e-9) {
+                job.disk.emplace_back(dx, dy);
+                job.radius = std::max(job.radius, std::abs(dx));
+            }
+    std::stable_sort(job.disk.begin(), job.disk.end(), [](const auto& a, const auto& b) {
         return a.first * a.first + a.second * a.second < b.first * b.first + b.second * b.second;
     });
-    if (disk.empty()) return out;
     ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * w + x;
-                const float zp = depth[i];
-                if (!hasData(zp)) continue;
-                const std::uint32_t ip = ids ? ids[i] : 0;
-                for (const auto& [dx, dy] : disk) {
-                    const int qx = x + dx, qy = y + dy;
-                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
-                    const std::size_t j = std::size_t(qy) * w + qx;
-                    const float zq = depth[j];
-                    if (!hasData(zq)) continue;
-                    const std::uint32_t iq = ids ? ids[j] : 0;
-                    const bool edge = o.nearSide ? nearOfEdge(zp, zq, ip, iq, ids != nullptr, o.depthThreshold)
-                                                 : nearOfEdge(zq, zp, iq, ip, ids != nullptr, o.depthThreshold);
-                    if (edge) {
-                        out[i] = 1.0f;
-                        break;
-                    }
-                }
-            }
+        for (int y = y0; y < y1; ++y) {
+            const int left = std::min(job.radius, w), right = std::max(left, w - job.radius);
+            int x = 0;
+            for (; x < left; ++x) silhouetteAt(job, x, y);
+            if (!job.disk.empty() && right > left) x = silhouetteSpan(job, y, left, right);
+            for (; x < w; ++x) silhouetteAt(job, x, y);
+        }
     });
-    return out;
 }
 
 }  // namespace darkroom::passes

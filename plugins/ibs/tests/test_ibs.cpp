@@ -1,6 +1,7 @@
 // IBS: no outlines on a plane, outlines exactly next to depth and id
 // discontinuities on the chosen side, colour over, lighting, stress inputs.
 #include "../../normals/tests/depth_scenes.h"
+#include "../../normals/tests/simd_targets.h"
 
 #include <darkroom/error.h>
 
@@ -184,6 +185,35 @@ TEST(Ibs, ResultDoesNotDependOnTheThreadCount) {
     const BufferPtr img = depthImage(cam, [](int x, int y) { return 3.0 + ((x / 9 + y / 7) % 3); }, {"R", "G", "B", "A"});
     const Inputs p{{"width", {Value(2.5)}}, {"lighting", {Value(true)}}};
     EXPECT_TRUE(identical(*runPass("IBS", img, p, 1), *runPass("IBS", img, p, 4)));
+}
+
+// Silhouettes and shading run vectors of pixels with the best SIMD
+// instructions of the CPU: every instruction set gives the same bits (width
+// 1 and a disk, both sides, lighting from reconstructed and captured normals).
+TEST(Ibs, ResultDoesNotDependOnTheSimdInstructionSet) {
+    const Camera cam = viewCamera(71, 45, true);
+    auto img = depthImage(cam, [](int x, int y) {
+        if ((x * 5 + y * 3) % 41 == 0) return double(kInf);
+        if ((x + y) % 53 == 0) return double(kNaN);
+        return 3.0 + ((x / 9 + y / 7) % 3) + 0.01 * x;
+    }, {"R", "G", "B", "A"});
+    float* a = img->writeFloat("A");
+    for (std::size_t i = 0; i < img->pixelCount(); i += 7) a[i] = float(i % 5) * 0.25f;
+    auto captured = depthImage(cam, [&](int x, int y) { return double(img->hostFloat("Z")[std::size_t(y) * cam.width + x]); },
+                               {"R", "G", "B", "N.x", "N.y", "N.z"});
+    for (std::size_t i = 0; i < captured->pixelCount(); ++i) {
+        captured->writeFloat("N.x")[i] = 0.6f * std::sin(float(i));
+        captured->writeFloat("N.y")[i] = 0.8f * std::cos(float(i));
+        captured->writeFloat("N.z")[i] = 0.1f;
+    }
+    const BufferPtr images[2] = {img, captured};
+    for (const BufferPtr& in : images)
+        for (const Inputs& p : {Inputs{}, Inputs{{"width", {Value(2.5)}}, {"side", {Value("far")}}},
+                                Inputs{{"lighting", {Value(true)}}, {"strength", {Value(0.6)}}}}) {
+            const auto results = resultsPerSimdTarget([&] { return runPass("IBS", in, p); });
+            for (const auto& [target, out] : results)
+                EXPECT_TRUE(identical(*out, *results.front().second)) << target << " differs from " << results.front().first;
+        }
 }
 
 }  // namespace

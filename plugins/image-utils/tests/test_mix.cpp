@@ -1,4 +1,5 @@
 // Mix: exact products, known compositing answers, pass-through, errors.
+#include "../../normals/tests/simd_targets.h"
 #include "run_node.h"
 
 #include <gmock/gmock.h>
@@ -97,4 +98,29 @@ TEST(Mix, ErrorsNameWhatIsMissing) {
     const std::string size = errorOf("Mix", {{"image", {Value(img)}}, {"other", {Value(small)}}});
     EXPECT_THAT(size, HasSubstr("4x1"));
     EXPECT_THAT(size, HasSubstr("2x1"));
+}
+
+// Mix runs vectors of pixels with the best SIMD instructions of the CPU:
+// every instruction set gives the same bits in every mode, with NaN, ±inf,
+// transparent and out-of-range values in both images.
+TEST(Mix, ResultDoesNotDependOnTheSimdInstructionSet) {
+    auto image = [](int seed) {
+        return makeImage(53, 7, {"R", "G", "B", "A", "Z", "value"}, [seed](int x, int y, int c) {
+            const std::uint32_t h = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(seed * 83492791 + c);
+            if (h % 23 == 0) return kNaN;
+            if (h % 29 == 0) return h % 2 ? kInf : -kInf;
+            if (c == 3) return float(h % 9) * 0.15f - 0.1f;  // alpha below 0, 0, between, above 1
+            return float(h % 1000) * 0.002f - 0.2f;
+        });
+    };
+    const BufferPtr a = image(1), b = image(2);
+    for (const char* mode : {"multiply", "blend", "over", "add"})
+        for (const double amount : {0.35, 1.0}) {
+            const Inputs in{{"image", {Value(a)}},          {"other", {Value(b)}},          {"mode", {Value(mode)}},
+                            {"factorChannel", {Value("value")}}, {"amount", {Value(amount)}}};
+            const auto results = resultsPerSimdTarget([&] { return runImage("Mix", in); });
+            for (const auto& [target, out] : results)
+                EXPECT_TRUE(identical(*out, *results.front().second))
+                    << mode << " " << amount << ": " << target << " differs from " << results.front().first;
+        }
 }

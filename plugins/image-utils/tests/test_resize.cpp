@@ -1,4 +1,5 @@
 // Resize: exact block means, depth and ids never blended, identities.
+#include "../../normals/tests/simd_targets.h"
 #include "run_node.h"
 
 #include <gmock/gmock.h>
@@ -131,5 +132,30 @@ TEST(Resize, ResultDoesNotDependOnTheThreadCount) {
         for (double s : {0.37, 2.6}) {
             const Inputs p = {{"scale", {Value(s)}}, {"filter", {Value(f)}}};
             EXPECT_TRUE(identical(*resize(in, p, 1), *resize(in, p, 4))) << f << " " << s;
+        }
+}
+
+// Rows of output pixels are resampled with the best SIMD instructions of the
+// CPU: every instruction set gives the same bits for every filter, down and up,
+// with NaN, infinite and transparent samples and uint32 ids.
+TEST(Resize, ResultDoesNotDependOnTheSimdInstructionSet) {
+    auto in = makeImage(67, 41, {"Z", "R", "G", "B", "A", "value"}, [](int x, int y, int c) {
+        const std::uint32_t h = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(c * 83492791);
+        if (h % 17 == 0) return c == 0 ? kInf : kNaN;
+        if (h % 31 == 0) return -kInf;
+        if (c == 4) return float(h % 5) * 0.25f;
+        return float(h % 1000) * 0.01f + (c == 0 ? 3.0f : 0.0f);
+    });
+    auto ids = makeCpuBuffer(67, 41, {{"objectId", ChannelType::UInt32}});
+    for (std::size_t i = 0; i < ids->pixelCount(); ++i) ids->writeUInt("objectId")[i] = std::uint32_t(i % 7);
+    in->setPlane({"objectId", ChannelType::UInt32}, ids->plane("objectId"));
+    const BufferPtr image = in;
+    for (const char* filter : {"box", "bilinear", "nearest"})
+        for (const double scale : {0.5, 0.3, 1.7}) {
+            const auto results = resultsPerSimdTarget(
+                [&] { return resize(image, {{"filter", {Value(filter)}}, {"scale", {Value(scale)}}}); });
+            for (const auto& [target, out] : results)
+                EXPECT_TRUE(identical(*out, *results.front().second))
+                    << filter << " " << scale << ": " << target << " differs from " << results.front().first;
         }
 }

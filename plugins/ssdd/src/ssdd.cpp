@@ -1,6 +1,6 @@
 #include "ssdd.h"
 
-#include "masked_blur.h"
+#include "darkening.h"
 
 #include <darkroom/error.h>
 #include <darkroom/view_geometry.h>
@@ -31,24 +31,20 @@ void Ssdd::execute(Context& ctx) {
 
     // Below a tenth of a pixel the blur is the identity: dD = 0.
     const bool active = sigma >= 0.1 && strength > 0.0 && n > 0;
-    std::vector<float> blurred;
-    if (active) blurred = passes::maskedGaussianDepth(ctx, depth, w, h, sigma);
-    const double footprint = sigma * camera.pixelSizeAt(1.0);  // world size of sigma at unit depth
-    const bool perspective = camera.projection == Camera::Projection::Perspective;
-    ctx.parallelFor(0, h, 16, [&](int y0, int y1) {
-        for (std::size_t i = std::size_t(y0) * w; i < std::size_t(y1) * w; ++i) {
-            float f = 1.0f;
-            if (active && isSurface(depth[i])) {
-                const double dd = double(blurred[i]) - double(depth[i]);
-                // Scale-free: a depth step is compared with how wide the blur
-                // is in the world at this depth.
-                const double s = perspective ? footprint * std::abs(double(depth[i])) : footprint;
-                if (dd < 0.0 && s > 0.0) f = float(std::exp(-strength * (-dd) / s));
-                if (!(f >= 0.0f)) f = 0.0f;
-            }
-            factor[i] = f;
-        }
-    });
+    if (active) {
+        passes::DarkeningJob job;
+        job.depth = depth;
+        job.width = w;
+        job.height = h;
+        job.horizontal = job.vertical = passes::boxCascade(sigma, std::max(w, h));
+        job.strength = strength;
+        job.footprint = sigma * camera.pixelSizeAt(1.0);  // world size of sigma at unit depth
+        job.perspective = camera.projection == Camera::Projection::Perspective;
+        job.factor = factor;
+        passes::depthDarkening(ctx, job);
+    } else {
+        std::fill_n(factor, n, 1.0f);
+    }
     if (apply) {
         for (const char* c : {"R", "G", "B"}) {
             const float* s = in->hostFloat(c);

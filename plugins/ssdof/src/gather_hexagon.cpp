@@ -1,14 +1,25 @@
+// The hexagon gather for a vector of pixels of a row at a time. Both passes
+// step along fixed directions, the same offset for every pixel of a vector,
+// so every tap is a plain load. The first pass's partial sums live in a ring
+// of rows (the reach of the second pass above and below the row it finishes)
+// per band of rows, not in a plane of the whole image.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/gather_hexagon.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
 #include "gathers.h"
+#include "layer_rules-inl.h"
 
 #include <darkroom/context.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
+#ifndef DARKROOM_SSDOF_HEXAGON_ONCE
+#define DARKROOM_SSDOF_HEXAGON_ONCE
 namespace darkroom::ssdof {
-
-namespace {
 
 // A regular hexagon of circumradius n is the union of three rhombi spanned by
 // pairs of the unit vectors v0, v1, v2 at 120 degrees (corners at +-v_k). A
@@ -21,133 +32,198 @@ namespace {
 // taps from 4n + 1 reads per pass. The gather is the hexagon mirrored through
 // p, which is the same hexagon. Each layer carries sums and weights through
 // the passes and is normalised only at the end.
-struct Partial {
-    Rgba sum;
-    float weight = 0.0f;
-    float reach = 0.0f;  // near layer: largest CoC among the samples summed
+struct HexagonSteps {
+    std::array<std::vector<std::array<int, 2>>, 3> dir;  // rounded offsets t * v_k, t = 0..max
 };
 
-struct Intermediate {
-    Partial backA, backS, nearA, nearS;
+// The partial sums of pass 1 per pixel, one plane each in a ring row: A and S
+// of the focus/far layer (colour, weight) and of the near layer (colour,
+// weight, the largest near CoC summed).
+enum Field { kBackA = 0, kBackS = 5, kNearA = 10, kNearS = 16, kFields = 22 };
+constexpr int kReach = 5;  // offset of the reach within a near partial
+
+struct Ring {
+    float* data;
+    int rows, stride;
+    float* field(int y, int f) const {
+        const int slot = ((y % rows) + rows) % rows;
+        return data + (std::size_t(slot) * kFields + std::size_t(f)) * std::size_t(stride);
+    }
 };
 
-// Lattice points of a hexagon of circumradius n: a near sample spreads weight
-// 1 over its whole kernel, 1/H per tap.
-float hexagonTaps(float radius) {
-    const float n = std::round(radius);
-    return 3.0f * n * n + 3.0f * n + 1.0f;
+}  // namespace darkroom::ssdof
+#endif
+
+HWY_BEFORE_NAMESPACE();
+namespace darkroom::ssdof {
+namespace HWY_NAMESPACE {
+
+// std::round(radius) lattice points of a hexagon: a near sample spreads
+// weight 1 over its whole kernel, 1/H per tap.
+HWY_INLINE VF HexagonTaps(VF radius) {
+    const DF d;
+    const VF n = RoundHalfAway(radius), three = hn::Set(d, 3.0f);
+    return hn::Add(hn::Add(hn::Mul(hn::Mul(three, n), n), hn::Mul(three, n)), hn::Set(d, 1.0f));
 }
 
-using Steps = std::vector<std::array<int, 2>>;  // rounded offsets t*v for t = 0..max
+// Pass 1 for row y: blur1D along v0 (t from 0) and along v1 (t from 1) of
+// both layers, into the ring.
+void FirstPass(const WorkImage& w, const HexagonSteps& steps, const Ring& ring, int y) {
+    const DF d;
+    const int lanes = int(hn::Lanes(d));
+    const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    for (int x0 = 0; x0 < w.width; x0 += lanes) {
+        const int count = std::min(lanes, w.width - x0);
+        const std::size_t i = w.index(x0, y);
+        // Past the image's right edge: CoC 0, no taps.
+        const VF sp = hn::IfThenElseZero(hn::FirstN(d, std::size_t(count)), hn::LoadU(d, w.coc.data() + i));
+        const VF rp = hn::Abs(sp);
+        const VF nBack = RoundHalfAway(rp);
+        const float nNear = float(std::lround(w.reachAt(x0, y)));
+        const int last = int(std::max(hn::GetLane(hn::MaxOfLanes(d, nBack)), nNear));
+        Layer back[2] = {Layer::zero(), Layer::zero()}, nearL[2] = {Layer::zero(), Layer::zero()};
+        VF reach[2] = {zero, zero};
+        for (int k = 0; k < 2; ++k)
+            for (int t = k; t <= last; ++t) {
+                const auto& o = steps.dir[std::size_t(k)][std::size_t(t)];
+                const std::size_t j = w.index(x0 + o[0], y + o[1]);
+                const VF sq = hn::LoadU(d, w.coc.data() + j);
+                const VF tv = hn::Set(d, float(t));
+                const MF inside = hn::Not(hn::IsNaN(sq));
+                const VF c[4] = {hn::LoadU(d, w.r.data() + j), hn::LoadU(d, w.g.data() + j), hn::LoadU(d, w.b.data() + j),
+                                 hn::LoadU(d, w.a.data() + j)};
+                const MF inBack = hn::And(inside, hn::Le(tv, nBack));
+                const VF wb = hn::IfThenElseZero(inBack, BackgroundWeight(sp, rp, hn::IfThenElseZero(inside, sq), tv));
+                back[k].add(wb, c[0], c[1], c[2], c[3]);
+                if (float(t) <= nNear) {
+                    const MF isNear = hn::And(inside, ReachesAsNear(sp, sq, tv));
+                    const VF wn = hn::IfThenElseZero(isNear, hn::Div(one, HexagonTaps(hn::Neg(sq))));
+                    nearL[k].add(wn, c[0], c[1], c[2], c[3]);
+                    reach[k] = hn::IfThenElse(hn::And(isNear, hn::Lt(reach[k], hn::Neg(sq))), hn::Neg(sq), reach[k]);
+                }
+            }
+        // S = A + the blur along v1 (Rgba::add with weight 1: a plain sum).
+        const std::size_t col = std::size_t(x0 + w.pad);
+        auto store = [&](int f, VF v) { hn::StoreU(v, d, ring.field(y, f) + col); };
+        auto storeLayer = [&](int f, const Layer& l) {
+            store(f, l.r);
+            store(f + 1, l.g);
+            store(f + 2, l.b);
+            store(f + 3, l.a);
+            store(f + 4, l.weight);
+        };
+        auto sum = [](const Layer& a, const Layer& b) {
+            return Layer{hn::Add(a.r, b.r), hn::Add(a.g, b.g), hn::Add(a.b, b.b), hn::Add(a.a, b.a), hn::Add(a.weight, b.weight)};
+        };
+        storeLayer(kBackA, back[0]);
+        storeLayer(kBackS, sum(back[0], back[1]));
+        storeLayer(kNearA, nearL[0]);
+        storeLayer(kNearS, sum(nearL[0], nearL[1]));
+        store(kNearA + kReach, reach[0]);
+        // std::max(nearS.reach, near1.reach)
+        store(kNearS + kReach, hn::IfThenElse(hn::Lt(reach[0], reach[1]), reach[1], reach[0]));
+    }
+}
 
-Steps steps(double angle, int count) {
-    Steps s(static_cast<std::size_t>(count) + 1);
+// Pass 2 for row y: A(p) + A along v1 + S along v2 of both layers, then the
+// composite.
+void SecondPass(const WorkImage& w, const HexagonSteps& steps, const Ring& ring, int y, const Output& out) {
+    const DF d;
+    const int lanes = int(hn::Lanes(d));
+    const VF zero = hn::Zero(d), half = hn::Set(d, 0.5f), focus = hn::Set(d, kInFocus);
+    for (int x0 = 0; x0 < w.width; x0 += lanes) {
+        const int count = std::min(lanes, w.width - x0);
+        const std::size_t i = w.index(x0, y);
+        const VF sp = hn::IfThenElseZero(hn::FirstN(d, std::size_t(count)), hn::LoadU(d, w.coc.data() + i));
+        const VF rp = hn::Abs(sp);
+        const std::size_t col = std::size_t(x0 + w.pad);
+        auto own = [&](int f) { return hn::LoadU(d, ring.field(y, f) + col); };
+        Layer nearL{own(kNearA), own(kNearA + 1), own(kNearA + 2), own(kNearA + 3), own(kNearA + 4)};
+        const int nNear = int(std::lround(w.reachAt(x0, y)));
+        for (int t = 1; t <= nNear; ++t)
+            for (int k = 1; k <= 2; ++k) {
+                const auto& o = steps.dir[std::size_t(k)][std::size_t(t)];
+                const MF inside = hn::Not(hn::IsNaN(hn::LoadU(d, w.coc.data() + w.index(x0 + o[0], y + o[1]))));
+                const int f = k == 1 ? kNearA : kNearS;
+                auto at = [&](int g) { return hn::LoadU(d, ring.field(y + o[1], f + g) + col + o[0]); };
+                const VF weight = at(4);
+                const MF use = hn::AndNot(hn::Or(hn::Eq(weight, zero), hn::Gt(hn::Set(d, float(t)), hn::Add(at(kReach), half))), inside);
+                nearL.addWhere(use, at);
+            }
+        const MF unchanged = hn::And(hn::Lt(rp, focus), hn::Eq(nearL.weight, zero));
+        const VF self[4] = {hn::LoadU(d, w.r.data() + i), hn::LoadU(d, w.g.data() + i), hn::LoadU(d, w.b.data() + i),
+                            hn::LoadU(d, w.a.data() + i)};
+        const std::size_t o = std::size_t(y) * std::size_t(w.width) + std::size_t(x0);
+        Layer backL{own(kBackA), own(kBackA + 1), own(kBackA + 2), own(kBackA + 3), own(kBackA + 4)};
+        const MF inImage = hn::FirstN(d, std::size_t(count));
+        if (!hn::AllTrue(d, hn::Or(unchanged, hn::Not(inImage)))) {
+            const VF nBack = RoundHalfAway(rp);
+            const int last = int(hn::GetLane(hn::MaxOfLanes(d, nBack)));
+            for (int t = 1; t <= last; ++t)
+                for (int k = 1; k <= 2; ++k) {
+                    const auto& o2 = steps.dir[std::size_t(k)][std::size_t(t)];
+                    const VF sq = hn::LoadU(d, w.coc.data() + w.index(x0 + o2[0], y + o2[1]));
+                    const MF inside = hn::Not(hn::IsNaN(sq));
+                    const VF tv = hn::Set(d, float(t));
+                    // The intermediate pixel stands for its own CoC.
+                    const VF wq = BackgroundWeight(sp, rp, hn::IfThenElseZero(inside, sq), tv);
+                    const MF use = hn::And(hn::And(inside, hn::Le(tv, nBack)), hn::Gt(wq, zero));
+                    const int f = k == 1 ? kBackA : kBackS;
+                    backL.addWhere(use, [&](int g) { return hn::LoadU(d, ring.field(y + o2[1], f + g) + col + o2[0]); });
+                }
+        }
+        Finish(out, o, count, nearL, backL, self[0], self[1], self[2], self[3], unchanged);
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace darkroom::ssdof
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace darkroom::ssdof {
+HWY_EXPORT(FirstPass);
+HWY_EXPORT(SecondPass);
+
+namespace {
+
+std::vector<std::array<int, 2>> steps(double angle, int count) {
+    std::vector<std::array<int, 2>> s(static_cast<std::size_t>(count) + 1);
     // Image rows go down: "up" rotated clockwise by angle is (sin, -cos).
     for (int t = 0; t <= count; ++t)
         s[std::size_t(t)] = {int(std::lround(t * std::sin(angle))), int(std::lround(-t * std::cos(angle)))};
     return s;
 }
 
-bool inside(const WorkImage& w, int x, int y) { return x >= 0 && y >= 0 && x < w.width && y < w.height; }
-
 }  // namespace
 
-void gatherHexagon(const WorkImage& w, double rotationDegrees, Context& ctx, GatherResult& out) {
+void gatherHexagon(const WorkImage& w, double rotationDegrees, Context& ctx, const Output& out) {
     const double pi = 3.14159265358979323846;
-    float largest = 0.0f;
-    for (float s : w.coc) largest = std::max(largest, std::fabs(s));
-    const int maxSteps = int(std::ceil(largest)) + 1;
-    std::array<Steps, 3> dir;
-    for (int k = 0; k < 3; ++k) dir[std::size_t(k)] = steps((rotationDegrees + 120.0 * k) * pi / 180.0, maxSteps);
-
-    std::vector<Intermediate> mid(w.colour.size());
-    // One 1D skewed blur of both layers at pixel (x, y) along direction d over t = first..n.
-    auto blur1D = [&](int x, int y, const Steps& d, int first, Partial& back, Partial& nearP) {
-        const float sp = w.coc[w.index(x, y)];
-        const int nBack = int(std::lround(std::fabs(sp)));
-        const int nNear = int(std::lround(w.reachAt(x, y)));
-        for (int t = first; t <= std::max(nBack, nNear); ++t) {
-            const int qx = x + d[std::size_t(t)][0], qy = y + d[std::size_t(t)][1];
-            if (!inside(w, qx, qy)) continue;
-            const std::size_t j = w.index(qx, qy);
-            const float sq = w.coc[j];
-            if (t <= nBack) {
-                const float wq = backgroundWeight(sp, sq, float(t));
-                if (wq > 0.0f) {
-                    back.sum.add(w.colour[j], wq);
-                    back.weight += wq;
-                }
-            }
-            if (t <= nNear && reachesAsNear(sp, sq, float(t))) {
-                const float wq = 1.0f / hexagonTaps(-sq);
-                nearP.sum.add(w.colour[j], wq);
-                nearP.weight += wq;
-                nearP.reach = std::max(nearP.reach, -sq);
+    // Every tap is within pad - 1 pixels (buildWorkImage): t runs to round(|CoC|) <= pad - 2.
+    const int maxSteps = w.pad - 1;
+    HexagonSteps hex;
+    for (int k = 0; k < 3; ++k) hex.dir[std::size_t(k)] = steps((rotationDegrees + 120.0 * k) * pi / 180.0, maxSteps);
+    // Bands of rows, each with a ring of the rows its second pass reads
+    // (pass 1 of the rows within the reach above a band is done again there:
+    // its result depends on the pixel alone, not on the band).
+    const int reach = maxSteps;
+    const int band = std::max(128, 8 * reach);
+    const int bands = (w.height + band - 1) / band;
+    ctx.parallelFor(0, bands, 1, [&](int b0, int b1) {
+        thread_local std::vector<float> storage;
+        const Ring ring{nullptr, 2 * reach + 2, w.stride};
+        storage.resize(std::size_t(ring.rows) * kFields * std::size_t(ring.stride));
+        const Ring r{storage.data(), ring.rows, ring.stride};
+        for (int b = b0; b < b1; ++b) {
+            const int y0 = b * band, y1 = std::min(w.height, y0 + band);
+            int done = std::max(0, y0 - reach);  // the next row pass 1 has to do
+            for (int y = y0; y < y1; ++y) {
+                for (; done <= std::min(w.height - 1, y + reach); ++done) HWY_DYNAMIC_DISPATCH(FirstPass)(w, hex, r, done);
+                HWY_DYNAMIC_DISPATCH(SecondPass)(w, hex, r, y, out);
             }
         }
-    };
-
-    ctx.parallelFor(0, w.height, 4, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w.width; ++x) {
-                Intermediate& m = mid[w.index(x, y)];
-                blur1D(x, y, dir[0], 0, m.backA, m.nearA);
-                Partial back1, near1;
-                blur1D(x, y, dir[1], 1, back1, near1);
-                m.backS = m.backA;
-                m.backS.sum.add(back1.sum, 1.0f);
-                m.backS.weight += back1.weight;
-                m.nearS = m.nearA;
-                m.nearS.sum.add(near1.sum, 1.0f);
-                m.nearS.weight += near1.weight;
-                m.nearS.reach = std::max(m.nearS.reach, near1.reach);
-            }
-    });
-    if (ctx.cancelled()) return;
-
-    out.colour.assign(w.colour.size(), Rgba{});
-    out.unchanged.assign(w.colour.size(), 0);
-    ctx.parallelFor(0, w.height, 4, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w.width; ++x) {
-                const std::size_t i = w.index(x, y);
-                const float sp = w.coc[i], rp = std::fabs(sp);
-                const Intermediate& self = mid[i];
-                Rgba nearSum = self.nearA.sum;
-                float nearWeight = self.nearA.weight;
-                const int nNear = int(std::lround(w.reachAt(x, y)));
-                for (int t = 1; t <= nNear; ++t)
-                    for (int k = 1; k <= 2; ++k) {
-                        const int qx = x + dir[std::size_t(k)][std::size_t(t)][0];
-                        const int qy = y + dir[std::size_t(k)][std::size_t(t)][1];
-                        if (!inside(w, qx, qy)) continue;
-                        const Partial& q = k == 1 ? mid[w.index(qx, qy)].nearA : mid[w.index(qx, qy)].nearS;
-                        if (q.weight == 0.0f || float(t) > q.reach + 0.5f) continue;
-                        nearSum.add(q.sum, 1.0f);
-                        nearWeight += q.weight;
-                    }
-                if (rp < kInFocus && nearWeight == 0.0f) {
-                    out.unchanged[i] = 1;
-                    continue;
-                }
-                Rgba backSum = self.backA.sum;
-                float backWeight = self.backA.weight;
-                const int nBack = int(std::lround(rp));
-                for (int t = 1; t <= nBack; ++t)
-                    for (int k = 1; k <= 2; ++k) {
-                        const int qx = x + dir[std::size_t(k)][std::size_t(t)][0];
-                        const int qy = y + dir[std::size_t(k)][std::size_t(t)][1];
-                        if (!inside(w, qx, qy)) continue;
-                        const std::size_t j = w.index(qx, qy);
-                        // The intermediate pixel stands for its own CoC.
-                        if (backgroundWeight(sp, w.coc[j], float(t)) == 0.0f) continue;
-                        const Partial& q = k == 1 ? mid[j].backA : mid[j].backS;
-                        backSum.add(q.sum, 1.0f);
-                        backWeight += q.weight;
-                    }
-                out.colour[i] = composite(nearSum, nearWeight, nearWeight, backSum, backWeight, w.colour[i]);
-            }
     });
 }
 
 }  // namespace darkroom::ssdof
+#endif

@@ -19,11 +19,19 @@
 //                    behind p within |s_p| (visible background around the
 //                    near object), or p itself when there are none.
 // out = alpha_F * F + (1 - alpha_F) * B, in premultiplied RGBA.
-#include <cmath>
+// The rules in code are in layer_rules-inl.h.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
+namespace darkroom {
+class Context;
+class WritableBuffer;
+}
+
 namespace darkroom::ssdof {
+
+struct LensModel;
 
 // CoC below this radius (pixels) is in focus: such a pixel neither scatters
 // nor is blurred; with no near-field light on it, it is copied exactly.
@@ -33,63 +41,46 @@ constexpr float kSameLayer = 1.0f;
 // Near-field reach is tracked per square tile of this many pixels.
 constexpr int kTile = 16;
 
-struct Rgba {
-    float r = 0, g = 0, b = 0, a = 0;
-    void add(const Rgba& c, float w) {
-        r += w * c.r;
-        g += w * c.g;
-        b += w * c.b;
-        a += w * c.a;
+// Planes of the image with a border of `pad` pixels on every side (CoC NaN,
+// colour 0 there) so that a tap never leaves the planes: a tap outside the
+// image is one whose CoC is NaN.
+struct WorkImage {
+    // One padded plane (in `storage`, from the host's pool).
+    struct Plane {
+        float* values = nullptr;
+        float* data() const { return values; }
+    };
+    int width = 0, height = 0;
+    int pad = 0;     // at least the largest tap offset of either gather
+    int stride = 0;  // floats per padded row (room for a vector past the right border)
+    Plane r, g, b, a;  // premultiplied colour, non-finite components replaced by 0
+    Plane coc;         // signed CoC radius, pixels
+    std::shared_ptr<WritableBuffer> storage;
+    std::vector<float> nearReach;   // per tile: largest near-field |CoC| that can reach it
+    int tilesX = 0;
+
+    std::size_t index(int x, int y) const {
+        return std::size_t(y + pad) * std::size_t(stride) + std::size_t(x + pad);
+    }
+    float reachAt(int x, int y) const {
+        return nearReach[std::size_t(y / kTile) * std::size_t(tilesX) + std::size_t(x / kTile)];
     }
 };
 
-struct WorkImage {
-    int width = 0, height = 0;
-    std::vector<Rgba> colour;  // premultiplied, non-finite components replaced by 0
-    std::vector<float> coc;    // signed CoC radius, pixels
-    std::vector<float> nearReach;  // per tile: largest near-field |CoC| that can reach it
-    int tilesX = 0;
-
-    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
-    float reachAt(int x, int y) const { return nearReach[std::size_t(y / kTile) * std::size_t(tilesX) + std::size_t(x / kTile)]; }
-};
+// Fills `w` from the input planes (A may be null: opaque) with the CoC of
+// `lens`, padded for CoCs up to lens.maxBlur. Returns whether any pixel is
+// out of focus.
+bool buildWorkImage(Context& ctx, const float* const rgba[4], const float* z, int width, int height,
+                    const LensModel& lens, WorkImage& w);
 
 // Fills WorkImage::nearReach from WorkImage::coc (dilated by the largest reach).
 void computeNearReach(WorkImage& w);
 
-// Does sample q (signed CoC sq) at distance t contribute to the focus/far
-// layer of p (signed CoC sp)? Returns its weight, 0 when it does not.
-inline float backgroundWeight(float sp, float sq, float t) {
-    const float rp = std::fabs(sp);
-    if (sp <= -kInFocus) {  // p in the near field: what lies behind it
-        return (sq > sp + kSameLayer && t <= rp + 0.5f) ? 1.0f : 0.0f;
-    }
-    if (sq < sp - kSameLayer) return 0.0f;  // in front of p: belongs to the near layer or is hidden
-    const float c = std::fmin(std::fabs(sq), rp);
-    if (t > c + 0.5f) return 0.0f;
-    const float cc = std::fmax(c, kInFocus);
-    return 1.0f / (cc * cc);
-}
-
-// Does sample q reach p through the near layer? sp only excludes near samples
-// behind a nearer p. Returns true; the caller applies its kernel-area weight.
-inline bool reachesAsNear(float sp, float sq, float t) {
-    if (sq > -kInFocus) return false;
-    if (sp <= -kInFocus && sq > sp + kSameLayer) return false;
-    return t <= -sq + 0.5f;
-}
-
-// Composites the layers and writes straight (un-premultiplied) RGBA.
-inline Rgba composite(const Rgba& nearSum, float nearWeight, float nearAlpha, const Rgba& backSum,
-                      float backWeight, const Rgba& self) {
-    Rgba out;
-    const float a = std::fmin(nearAlpha, 1.0f);
-    if (a > 0.0f) out.add(nearSum, a / nearWeight);
-    if (backWeight > 0.0f)
-        out.add(backSum, (1.0f - a) / backWeight);
-    else
-        out.add(self, 1.0f - a);
-    return out;
-}
+// Where the gathers write: straight (un-premultiplied) colour, or the input's
+// own bits where a pixel is in focus with no near-field light on it.
+struct Output {
+    const float* in[4];  // R, G, B, A of the input (A may be null)
+    float* out[4];       // R, G, B, A (A null when the input has none)
+};
 
 }  // namespace darkroom::ssdof

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <string>
 
 namespace darkroom {
 
@@ -29,60 +31,29 @@ void SSDoF::execute(Context& ctx) {
     if (!(focal > 0.0)) focal = autoFocusDistance(Z, width, height);
     const LensModel lens = makeLens(camera, height, aperture, focal, ctx.get(maxBlur_));
 
+    const float* rgba[4] = {R, G, B, A};
     WorkImage w;
-    w.width = width;
-    w.height = height;
-    w.colour.resize(in->pixelCount());
-    w.coc.resize(in->pixelCount());
-    bool anyBlur = false;
-    for (std::size_t i = 0; i < in->pixelCount(); ++i) {
-        w.coc[i] = lens.signedRadius(Z[i]);
-        anyBlur = anyBlur || std::fabs(w.coc[i]) >= kInFocus;
-        // Premultiplied; a non-finite component (NaN colour on background) carries no light.
-        const float a = A ? (std::isfinite(A[i]) ? A[i] : 0.0f) : 1.0f;
-        auto pm = [&](float c) { return std::isfinite(c) ? c * a : 0.0f; };
-        w.colour[i] = {pm(R[i]), pm(G[i]), pm(B[i]), a};
-    }
-
-    if (!anyBlur) {  // nothing out of focus: the input is the answer
+    if (!buildWorkImage(ctx, rgba, Z, width, height, lens, w)) {  // nothing out of focus: the input is the answer
         ctx.progress(1.0);
         ctx.set(result_, in);
         return;
     }
     computeNearReach(w);
+    if (double(w.stride) * double(height + 2 * w.pad) >= double(std::numeric_limits<std::int32_t>::max()))
+        throw Error("the image (" + std::to_string(width) + "x" + std::to_string(height) +
+                    ") is too large for SSDoF's 32-bit sample indices");
 
-    GatherResult g;
-    if (ctx.get(method_) == Method::Hexagon)
-        gatherHexagon(w, ctx.get(rotation_), ctx, g);
-    else
-        gatherDisc(w, int(ctx.get(samples_)), ctx, g);
-
-    // New colour, every pixel written below; the rest is shared.
+    // New colour, every pixel written by the gather; the rest is shared.
     std::vector<ChannelDesc> fresh{"R", "G", "B"};
     if (A) fresh.push_back("A");
     auto out = ctx.derive(in, fresh, Fill::None);
-    float* oR = out->writeFloat("R");
-    float* oG = out->writeFloat("G");
-    float* oB = out->writeFloat("B");
-    float* oA = A ? out->writeFloat("A") : nullptr;
-    ctx.parallelFor(0, height, 16, [&](int y0, int y1) {
-        for (std::size_t i = std::size_t(y0) * width; i < std::size_t(y1) * width; ++i) {
-            if (g.unchanged[i]) {  // in focus, nothing bleeds in: bit-identical
-                oR[i] = R[i];
-                oG[i] = G[i];
-                oB[i] = B[i];
-                if (oA) oA[i] = A[i];
-                continue;
-            }
-            const Rgba& c = g.colour[i];
-            // Straight alpha out; a fully transparent result is transparent black.
-            const float inv = c.a > 0.0f ? 1.0f / c.a : 0.0f;
-            oR[i] = A ? c.r * inv : c.r;
-            oG[i] = A ? c.g * inv : c.g;
-            oB[i] = A ? c.b * inv : c.b;
-            if (oA) oA[i] = std::min(c.a, 1.0f);
-        }
-    });
+    const Output o{{R, G, B, A},
+                   {out->writeFloat("R"), out->writeFloat("G"), out->writeFloat("B"), A ? out->writeFloat("A") : nullptr}};
+    if (ctx.get(method_) == Method::Hexagon)
+        gatherHexagon(w, ctx.get(rotation_), ctx, o);
+    else
+        gatherDisc(w, int(ctx.get(samples_)), ctx, o);
+    if (ctx.cancelled()) throw Cancelled();
     ctx.progress(1.0);
     ctx.set(result_, out);
 }

@@ -1,6 +1,7 @@
 // SSDoF through the plugin registry: known answers for in-focus identity, the
 // point-spread shape and size of both apertures, near/far bleeding rules, and
 // robustness on degenerate input.
+#include "../../normals/tests/simd_targets.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
@@ -294,6 +295,28 @@ TEST(SSDoF, OneAndFourThreadsGiveIdenticalImages) {
     });
     for (const char* m : {"disc", "hexagon"})
         EXPECT_TRUE(identical(*dof(in, lens(0.4, 2.0, m), 1), *dof(in, lens(0.4, 2.0, m), 4))) << m;
+}
+
+// Both gathers run vectors of pixels with the best SIMD instructions of the
+// CPU (the near field's taps as plain loads, the far field's as gathers):
+// every instruction set gives the same bits, with near and far fields,
+// background, transparent pixels, a width that is no multiple of a vector
+// and a rotated hexagon.
+TEST(SSDoF, ResultDoesNotDependOnTheSimdInstructionSet) {
+    const BufferPtr in = scene(83, 47, [](int x, int y, int c) -> float {
+        if (c == 4) return x < 25 ? 0.9f : (y < 15 ? kInf : 2.0f + 0.05f * float(x));
+        if (c == 3) return x > 70 ? 0.5f : ((x + y) % 19 == 0 ? 0.0f : 1.0f);
+        return 0.5f + 0.5f * std::sin(0.3f * float(x * (c + 1)) + 0.2f * float(y));
+    });
+    for (const char* m : {"disc", "hexagon"}) {
+        auto p = lens(0.4, 2.0, m, 12.0);
+        p["samples"] = {Value(std::int64_t(23))};
+        p["rotation"] = {Value(17.0)};
+        const auto results = test::resultsPerSimdTarget([&] { return dof(in, p); });
+        for (const auto& [target, out] : results)
+            EXPECT_TRUE(identical(*out, *results.front().second)) << m << ": " << target << " differs from "
+                                                                  << results.front().first;
+    }
 }
 
 TEST(SSDoF, RefusesAnImageWithoutCameraOrDepth) {

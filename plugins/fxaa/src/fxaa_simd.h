@@ -1,0 +1,29 @@
+#pragma once
+// The parts of FXAA that run a vector of pixels at a time: the luma, and the
+// contrast check that leaves most pixels untouched. Both give the bits of the
+// per-pixel code (luma.cpp, fxaa_kernel.cpp).
+#include "fxaa_kernel.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace darkroom::fxaa {
+
+// computeLuma (luma.h) for [begin, end); returns end, or begin when the span
+// is shorter than a vector (the caller finishes it with computeLuma).
+std::size_t lumaSpan(const float* r, const float* g, const float* b, const float* alpha, float* luma,
+                     std::size_t begin, std::size_t end);
+
+// For pixels [x0, x1) of row y, 1 <= x0, x1 <= width - 1, 1 <= y < height - 1:
+// copies the colour of every pixel whose luma is NaN or whose contrast is
+// below the thresholds (decide() would return no blend) and sets
+// needsDecision[x] to 0 there, 1 elsewhere. Returns x1, or x0 when the span
+// is shorter than a vector.
+struct ColourRows {
+    const float* in[4];  // R, G, B, A (A may be null)
+    float* out[4];
+};
+int flatSpan(const LumaPlane& plane, const Settings& s, const ColourRows& colour, int y, int x0, int x1,
+             std::uint8_t* needsDecision);
+
+}  // namespace darkroom::fxaa
