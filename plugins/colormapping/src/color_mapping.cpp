@@ -178,7 +178,7 @@ void ColorMapping::execute(Context& ctx) {
                     } else if (std::isnan(v) || !job.haveRange) {
                         c = nan;
                     } else {
-                        const double f = logPosition(v, low, high) * (kTableSize - 1);
+                        const double f = colormapping::logPosition(v, low, high) * (kTableSize - 1);
                         const int k = std::min(int(f), kTableSize - 2);
                         const float t = float(f - k), s = 1.0f - t;
                         // This form returns either entry exactly at t = 0 and t = 1.
