@@ -126,7 +126,16 @@ int main(int argc, char** argv) {
         // with nothing to run (the libraries: OpenImageIO's dependencies alone
         // are ~130 MB resident on Debian 12).
         long peakRun = 0, peakIdle = 0;
-        runCommand({DARKROOM_RUNNER, "-q", "run", pipeline.string(), "--output", (root / "o").string()}, &peakRun);
+        // The whole command as a user runs it (process start, plugin loading,
+        // reading the databases, every node, writing the PNG): best of three.
+        double processSeconds = 1e9;
+        for (int i = 0; i < 3; ++i) {
+            long peak = 0;
+            const auto t0 = Clock::now();
+            runCommand({DARKROOM_RUNNER, "-q", "run", pipeline.string(), "--output", (root / "o").string()}, &peak);
+            processSeconds = std::min(processSeconds, std::chrono::duration<double>(Clock::now() - t0).count());
+            peakRun = std::max(peakRun, peak);
+        }
         runCommand({DARKROOM_RUNNER, "-q", "validate", pipeline.string()}, &peakIdle);
 
         Registry registry;
@@ -190,6 +199,9 @@ int main(int argc, char** argv) {
                     "process validating only (libraries and plugins loaded): %.0f MB; the pipeline's own: %.0f MB.\n",
                     peakRun / 1024.0, peakIdle / 1024.0, (peakRun - peakIdle) / 1024.0);
         std::printf("Cache held after the edits: %.0f MB.\n", double(ev.cachedBytes()) / (1 << 20));
+        std::printf("`darkroom run` of the pipeline as a command (process start to exit, PNG written), best of 3: "
+                    "%.0f ms.\n",
+                    processSeconds * 1e3);
         fs::remove_all(root);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_edits: %s\n", e.what());
