@@ -100,7 +100,7 @@ Staged readStaged(const DatabaseSink& sink) {
 }  // namespace
 
 std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::string>& sinks,
-                                        const EvaluatorOptions& o) {
+                                        const EvaluatorOptions& o, bool overRanks) {
     std::vector<DatabaseSink> out;
     for (const auto& name : sinks) {
         const Node* n = g.node(name);
@@ -109,9 +109,11 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
             database->type != PortType::Path)
             continue;
         DatabaseSink sink{name, n->type, valueOf(g, *n, "database"), valueOf(g, *n, "mode"), valueOf(g, *n, "format")};
-        if (!g.edgesInto(name, "database").empty())
-            throw Error(label(sink) + ": its database comes through an edge; give it as a parameter, so that "
-                                      "the runner knows which database the entries go to");
+        if (!g.edgesInto(name, "database").empty()) {
+            if (!overRanks) continue;
+            throw Error(label(sink) + ": its database comes through an edge; under mpirun give it as a "
+                                      "parameter, so that the runner can stage each rank's entries");
+        }
         if (sink.database.empty()) continue;  // the node says so at its first entry
         // As HostContext::resolveOutputPath, then lexically normal like the node.
         const fs::path p(sink.database);

@@ -23,11 +23,11 @@ struct DatabaseSink {
     std::string format;    // the node's product format (png, exr), when it has one
 };
 
-// The sinks among `sinks` with a connected `row` input and a `database` path.
-// Throws Error for one whose database comes through an edge (the runner
-// could not stage it).
+// The sinks among `sinks` with a connected `row` input and a `database` path
+// parameter. One whose database comes through an edge is left to itself
+// alone, and refused (Error) over ranks, where it could not be staged.
 std::vector<DatabaseSink> databaseSinks(const Graph& graph, const std::vector<std::string>& sinks,
-                                        const EvaluatorOptions& options);
+                                        const EvaluatorOptions& options, bool overRanks);
 
 std::string stagingFolder(const DatabaseSink& sink);
 std::string stagingDatabase(const DatabaseSink& sink, int rank);

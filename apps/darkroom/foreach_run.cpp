@@ -151,7 +151,7 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
     const std::vector<OutputPort> outputs = outputPorts(g, entrySinks);
     std::vector<DatabaseSink> databases;
     try {
-        databases = databaseSinks(g, entrySinks, o);
+        databases = databaseSinks(g, entrySinks, o, processes().size > 1);
     } catch (const Error& e) {
         if (processes().root()) reportError(e.what());
         return kBadInput;
