@@ -6,6 +6,7 @@
 // resume; a database the node's mode refuses stops the run once, before any
 // shading.
 #include "run_process.h"
+#include "small_database.h"
 #include "test_support.h"
 
 #include <darkroom/framework/cinema/database.h>
@@ -20,17 +21,6 @@ namespace darkroom::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-const char* kScene =
-    "objects:\n"
-    "  - generator: isosurface\n"
-    "    parameters: {resolution: 24}\n"
-    "    fields: [height]\n"
-    "cameras:\n"
-    "  resolution: [40, 32]\n"
-    "  grid: {phi: 5, theta: [0, 40]}\n"
-    "channels:\n"
-    "  scalars: [height]\n";
 
 // Two databases (pictures and G-buffers with the colour added) and a movie of
 // the pictures, which runs after the last entry.
@@ -75,10 +65,9 @@ int count(const std::string& text, const std::string& what) {
 
 struct Batch {
     TempDir dir;
-    Batch(const std::string& pipeline = withMovie()) {
-        writeText(dir.file("scene.yaml"), kScene);
+    explicit Batch(const std::string& pipeline = withMovie()) {
         writeText(dir.file("shade.yaml"), pipeline);
-        const RunResult r = runAlone({"capture", dir.file("scene.yaml"), "-o", dir.file("db.cdb"), "-q"});
+        const RunResult r = captureSmallDatabase(dir);
         EXPECT_EQ(r.exitCode, 0) << r.err;
     }
     std::vector<std::string> shade(const std::string& out, std::vector<std::string> more = {}) const {
