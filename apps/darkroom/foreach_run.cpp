@@ -1,6 +1,7 @@
 #include "foreach_run.h"
 
 #include "cli.h"
+#include "database_sinks.h"
 #include "entry_scheduler.h"
 #include "processes.h"
 
@@ -148,6 +149,16 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
     for (const auto& sink : g.sinks()) (perEntry.count(sink) ? entrySinks : finalSinks).push_back(sink);
     if (entrySinks.empty()) std::swap(entrySinks, finalSinks);  // nothing reads the entry: every sink per entry
     const std::vector<OutputPort> outputs = outputPorts(g, entrySinks);
+    std::vector<DatabaseSink> databases;
+    try {
+        databases = databaseSinks(g, entrySinks, o, processes().size > 1);
+    } catch (const Error& e) {
+        if (processes().root()) reportError(e.what());
+        return kBadInput;
+    }
+    // Under mpirun each rank writes the entries it shades into a staging
+    // database of its own; rank 0 adopts them all at the end (database_sinks.h).
+    const bool staging = processes().size > 1 && !databases.empty();
     auto filesOf = [&](std::size_t row) {
         std::vector<std::string> files;
         for (const auto& out : outputs) files.push_back(resolvedOutput(o, perEntryPath(out.original, db.entryName(row))));
@@ -156,15 +167,36 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
 
     // The root decides what a resume keeps, so every process works on the same list.
     std::unique_ptr<EntryScheduler> scheduler = makeEntryScheduler();
+    // It also checks the databases against their nodes' modes first, so that
+    // a refused one stops the run before any shading, reported once.
+    const std::string refused = "refused";
     std::string todoText;
     if (scheduler->root()) {
-        for (std::size_t k = 0; k < rows.size(); ++k) {
-            bool done = s.resume && !outputs.empty();
+        std::vector<std::set<std::string>> keptByDatabase;
+        for (const auto& d : databases) {
+            try {
+                prepareDatabase(d);
+                if (s.resume) keptByDatabase.push_back(entriesKeptByResume(d));
+            } catch (const Error& e) {
+                reportError(label(d) + ": " + e.what());
+                todoText = refused;
+                break;
+            }
+        }
+        for (std::size_t k = 0; k < rows.size() && todoText != refused; ++k) {
+            bool done = s.resume && !(outputs.empty() && databases.empty());
             for (const auto& f : filesOf(rows[k])) done = done && fs::is_regular_file(f) && fs::file_size(f) > 0;
+            for (const auto& entries : keptByDatabase) done = done && entries.count(db.entryName(rows[k]));
             if (!done) todoText += std::to_string(k) + " ";
         }
     }
     scheduler->share(todoText);
+    if (todoText == refused) return kBadInput;
+    for (const auto& d : databases) {
+        if (!staging) break;
+        g.setParameter(d.node, "database", Value(stagingDatabase(d, processes().rank)));
+        g.setParameter(d.node, "mode", Value(std::string("overwrite")));
+    }
     std::vector<std::size_t> todo;
     {
         std::istringstream in(todoText);
@@ -210,9 +242,23 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
         records += std::to_string(position) + "\n";
         scheduler->finished();
     }
+    // The writers release their staging databases (data.csv written a last
+    // time, lock removed) before rank 0 reads them.
+    if (staging) ev.clearCache();
     bool anyFailed = false;
     const std::vector<std::string> all = scheduler->gather(records, failedHere, anyFailed);
     bar.finish();
+    // Also after a failure: the database then holds what was shaded, as one
+    // process's would, and a resume completes it.
+    for (const auto& d : databases) {
+        if (!staging || !scheduler->root()) break;
+        try {
+            mergeStagedEntries(d);
+        } catch (const Error& e) {
+            reportError(label(d) + ": " + e.what());
+            if (failure == kOk) failure = kRuntimeFailure;
+        }
+    }
     if (scheduler->root() && !s.index.empty()) {
         // Entries kept by the resume and entries shaded now, by any process.
         std::map<std::size_t, std::vector<std::string>> filesByRow;

@@ -4,8 +4,10 @@
 // entry. Under mpirun the entries are shared among the ranks (entry_scheduler.h)
 // and rank 0 alone draws the progress bar. --resume skips entries whose
 // outputs all exist (every output is written atomically, so an existing file
-// is a whole one); --index writes a CSV of the entries shaded and the files
-// written for each, the same whatever the number of ranks.
+// is a whole one) and that the databases row-fed sinks write in mode resume
+// hold; --index writes a CSV of the entries shaded and the files written for
+// each, the same whatever the number of ranks. Those databases are staged per
+// rank and merged by rank 0 (database_sinks.h).
 #include "progress_bar.h"
 
 #include <darkroom/framework/evaluator.h>

@@ -2,6 +2,7 @@
 // images, byte for byte, and writes the same index as one process; a run
 // that failed part-way resumes; rank 0 alone draws the progress bar.
 #include "run_process.h"
+#include "small_database.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -11,17 +12,6 @@
 
 namespace darkroom::test {
 namespace {
-
-const char* kScene =
-    "objects:\n"
-    "  - generator: isosurface\n"
-    "    parameters: {resolution: 24}\n"
-    "    fields: [height]\n"
-    "cameras:\n"
-    "  resolution: [40, 32]\n"
-    "  grid: {phi: 5, theta: [0, 40]}\n"
-    "channels:\n"
-    "  scalars: [height]\n";
 
 // Two outputs per entry, so the index has two file columns.
 const char* kPipeline =
@@ -52,9 +42,8 @@ struct Batch {
     TempDir dir;
     std::string pipeline = dir.file("shade.yaml");
     Batch() {
-        writeText(dir.file("scene.yaml"), kScene);
         writeText(pipeline, kPipeline);
-        const RunResult r = runAlone({"capture", dir.file("scene.yaml"), "-o", dir.file("db.cdb"), "-q"});
+        const RunResult r = captureSmallDatabase(dir);
         EXPECT_EQ(r.exitCode, 0) << r.err;
     }
     std::vector<std::string> shade(const std::string& out) const {

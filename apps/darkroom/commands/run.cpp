@@ -79,7 +79,8 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         ->needs(fe)
         ->type_name("FILE.csv");
     cmd->add_flag("--resume", a->resume,
-                  "With --foreach: skip entries whose output files all exist (complete an interrupted run)")
+                  "With --foreach: skip entries whose output files all exist and that every CinemaWriter in "
+                  "mode resume already holds (complete an interrupted run)")
         ->needs(fe);
     cmd->add_option("-j,--threads", a->threads,
                     "Worker threads (default: all cores; under mpirun the node's cores shared among its ranks)")

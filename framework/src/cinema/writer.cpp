@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <set>
 
 namespace darkroom {
@@ -198,24 +199,32 @@ struct CinemaWriter::Impl {
             if (isTemporaryLeftover(p.filename().string())) fs::remove_all(p);
     }
 
-    void resumeExisting() {
-        removeTemporaryLeftovers();
+    // The data.csv a resume reads; none when the folder holds nothing else
+    // than the leftovers of interrupted writes.
+    std::optional<CsvTable> resumableTable() const {
         if (!fs::exists(csvPath)) {
-            if (!contents().empty())
-                throw Error(fmt::format("cannot resume {}: it has no data.csv, so it is not a Cinema "
-                                        "database written by Darkroom; use --overwrite to replace it",
-                                        folder));
-            return;
+            for (const auto& p : contents())
+                if (!isTemporaryLeftover(p.filename().string()))
+                    throw Error(fmt::format("cannot resume {}: it has no data.csv, so it is not a Cinema "
+                                            "database written by Darkroom; use --overwrite to replace it",
+                                            folder));
+            return std::nullopt;
         }
         CsvReadOptions strict;
         strict.strict = true;
-        CsvTable table;
         try {
-            table = readCsvFile(csvPath, strict);
+            return readCsvFile(csvPath, strict);
         } catch (const Error& e) {
             throw Error(fmt::format("cannot resume {}: {}; use --overwrite to start afresh", folder,
                                     e.what()));
         }
+    }
+
+    void resumeExisting() {
+        removeTemporaryLeftovers();
+        const std::optional<CsvTable> existing = resumableTable();
+        if (!existing) return;
+        const CsvTable& table = *existing;
         std::vector<std::string> expected = columns;
         expected.push_back("FILE");
         for (const auto& a : options.attachments) expected.push_back(a.column);
@@ -249,14 +258,83 @@ struct CinemaWriter::Impl {
         resumed = entries.size();
     }
 
-    void removeForOverwrite() const {
+    void removeForOverwrite(bool apply) const {
         if (!fs::exists(csvPath))
             throw Error(fmt::format("refusing to overwrite {}: it is not empty and has no data.csv, so "
                                     "it does not look like a Cinema database",
                                     folder));
-        for (const auto& p : contents()) fs::remove_all(p);
+        if (apply)
+            for (const auto& p : contents()) fs::remove_all(p);
+    }
+
+    // Called with the lock held: what the folder holds against the mode.
+    // `apply` false only checks (CinemaWriter::check).
+    void openExisting(bool apply) {
+        if (contents().empty()) return;
+        if (options.resume) {
+            if (apply)
+                resumeExisting();
+            else
+                resumableTable();
+        } else if (options.overwrite) {
+            removeForOverwrite(apply);
+        } else {
+            throw Error(fmt::format("database {} already exists and is not empty; use --overwrite "
+                                    "to replace it or --resume to complete it",
+                                    folder));
+        }
+    }
+
+    void checkAttachmentColumns(const std::vector<std::string>& cells, const std::vector<std::string>& given) const {
+        for (const auto& a : options.attachments)
+            if (std::find(given.begin(), given.end(), a.column) == given.end())
+                throw Error(fmt::format("entry {} of database {}: the file for column {} is missing", describe(cells),
+                                        folder, a.column));
+        for (const auto& column : given)
+            if (std::none_of(options.attachments.begin(), options.attachments.end(),
+                             [&](const CinemaAttachmentColumn& a) { return a.column == column; }))
+                throw Error(fmt::format("entry {} of database {}: {} is not an attachment column of this database",
+                                        describe(cells), folder, column));
+    }
+
+    // Called with the mutex held.
+    void checkCanAdd(const std::vector<std::string>& cells, const std::string& file) const {
+        if (finished) throw Error(fmt::format("database {}: addEntry after finish()", folder));
+        auto it = entries.find(file);
+        if (it != entries.end() && it->second.cells != cells)
+            throw Error(fmt::format("database {}: entries '{}' and '{}' would share the file {}; "
+                                    "make the parameter values distinguishable",
+                                    folder, describe(it->second.cells), describe(cells), file));
+    }
+
+    void record(std::vector<std::string> cells, const std::string& file) {
+        Entry e{std::move(cells), {}};
+        for (const auto& c : e.cells) e.key.push_back(sortCell(c));
+        entries.insert_or_assign(file, std::move(e));
     }
 };
+
+namespace {
+
+// Renames a finished file into place; across file systems, copies it beside
+// its destination first so the destination still appears whole.
+void moveFileInto(const fs::path& from, const fs::path& to) {
+    std::error_code ec;
+    fs::rename(from, to, ec);
+    if (ec == std::errc::cross_device_link) {
+        const std::string tmp = temporaryPathFor(to.string());
+        fs::copy_file(from, tmp, fs::copy_options::overwrite_existing, ec);
+        if (!ec) {
+            commitFile(tmp, to.string());
+            fs::remove(from, ec);
+            return;
+        }
+        fs::remove(tmp);
+    }
+    if (ec) throw Error(fmt::format("cannot move {} to {}: {}", from.string(), to.string(), ec.message()));
+}
+
+}  // namespace
 
 CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnNames,
                            CinemaWriterOptions options)
@@ -279,20 +357,33 @@ CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnName
 
     d.lock = std::make_unique<DatabaseLock>(d.folder);
     try {
-        if (!d.contents().empty()) {
-            if (d.options.resume)
-                d.resumeExisting();
-            else if (d.options.overwrite)
-                d.removeForOverwrite();
-            else
-                throw Error(fmt::format("database {} already exists and is not empty; use --overwrite "
-                                        "to replace it or --resume to complete it",
-                                        d.folder));
-        }
+        d.openExisting(true);
         d.writeCsv();
     } catch (const fs::filesystem_error& e) {
         throw Error(fmt::format("database {}: {}", d.folder, e.what()));
     }
+}
+
+void CinemaWriter::check(std::string path, const CinemaWriterOptions& options) {
+    Impl d;
+    while (path.size() > 1 && path.back() == '/') path.pop_back();
+    d.folder = std::move(path);
+    d.csvPath = (fs::path(d.folder) / "data.csv").string();
+    d.options = options;
+    if (d.options.overwrite && d.options.resume)
+        throw Error(fmt::format("database {}: --overwrite and --resume exclude each other", d.folder));
+    std::error_code ec;
+    if (!fs::exists(d.folder, ec)) return;
+    if (!fs::is_directory(d.folder, ec))
+        throw Error(fmt::format("cannot write database {}: a file of that name exists", d.folder));
+    // Taking the lock is the only way to know that no one holds it.
+    DatabaseLock lock(d.folder);
+    try {
+        d.openExisting(false);
+    } catch (const fs::filesystem_error& e) {
+        throw Error(fmt::format("database {}: {}", d.folder, e.what()));
+    }
+    lock.releaseAndRemove();
 }
 
 CinemaWriter::~CinemaWriter() = default;
@@ -317,24 +408,12 @@ void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& im
     Impl& d = *impl_;
     auto cells = d.cellsOf(parameters);
     const std::string file = d.fileNameOf(cells);
-    for (const auto& a : d.options.attachments)
-        if (!attachments.count(a.column))
-            throw Error(fmt::format("entry {} of database {}: the file for column {} is missing", d.describe(cells),
-                                    d.folder, a.column));
-    for (const auto& [column, bytes] : attachments)
-        if (std::none_of(d.options.attachments.begin(), d.options.attachments.end(),
-                         [&](const CinemaAttachmentColumn& a) { return a.column == column; }))
-            throw Error(fmt::format("entry {} of database {}: {} is not an attachment column of this database",
-                                    d.describe(cells), d.folder, column));
+    std::vector<std::string> given;
+    for (const auto& [column, bytes] : attachments) given.push_back(column);
+    d.checkAttachmentColumns(cells, given);
     {
         std::lock_guard<std::mutex> g(d.mutex);
-        if (d.finished)
-            throw Error(fmt::format("database {}: addEntry after finish()", d.folder));
-        auto it = d.entries.find(file);
-        if (it != d.entries.end() && it->second.cells != cells)
-            throw Error(fmt::format("database {}: entries '{}' and '{}' would share the file {}; "
-                                    "make the parameter values distinguishable",
-                                    d.folder, d.describe(it->second.cells), d.describe(cells), file));
+        d.checkCanAdd(cells, file);
     }
     // The product first (atomically), the row naming it second: a kill in
     // between leaves a product no row names, which a resume rewrites.
@@ -342,9 +421,56 @@ void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& im
     for (const auto& a : d.options.attachments)
         writeFileAtomic((fs::path(d.folder) / d.attachmentNameOf(file, a)).string(), attachments.at(a.column));
     std::lock_guard<std::mutex> g(d.mutex);
-    Impl::Entry e{std::move(cells), {}};
-    for (const auto& c : e.cells) e.key.push_back(sortCell(c));
-    d.entries.insert_or_assign(file, std::move(e));
+    d.record(std::move(cells), file);
+    d.writeCsv();
+}
+
+void CinemaWriter::adoptEntries(const std::vector<CinemaStagedEntry>& staged) {
+    Impl& d = *impl_;
+    struct Adoption {
+        std::vector<std::string> cells;
+        std::string file;
+        std::vector<std::pair<fs::path, fs::path>> moves;  // product first, then attachments
+    };
+    std::vector<Adoption> todo;
+    std::map<std::string, std::vector<std::string>> inBatch;  // file -> cells
+    std::lock_guard<std::mutex> g(d.mutex);
+    for (const auto& s : staged) {
+        Adoption a{d.cellsOf(s.parameters), {}, {}};
+        a.file = d.fileNameOf(a.cells);
+        std::vector<std::string> given;
+        for (const auto& [column, path] : s.attachments) given.push_back(column);
+        d.checkAttachmentColumns(a.cells, given);
+        d.checkCanAdd(a.cells, a.file);
+        const auto [earlier, fresh] = inBatch.emplace(a.file, a.cells);
+        if (!fresh && earlier->second != a.cells)
+            throw Error(fmt::format("database {}: entries '{}' and '{}' would share the file {}; "
+                                    "make the parameter values distinguishable",
+                                    d.folder, d.describe(earlier->second), d.describe(a.cells), a.file));
+        std::error_code ec;
+        if (!fs::is_regular_file(s.product, ec) || fs::file_size(s.product, ec) == 0)
+            throw Error(fmt::format("entry {} of database {}: its product {} is missing or empty", d.describe(a.cells),
+                                    d.folder, s.product));
+        a.moves.emplace_back(s.product, fs::path(d.folder) / a.file);
+        for (const auto& column : d.options.attachments) {
+            const std::string& from = s.attachments.at(column.column);
+            if (!fs::is_regular_file(from, ec))
+                throw Error(fmt::format("entry {} of database {}: its file {} for column {} is missing",
+                                        d.describe(a.cells), d.folder, from, column.column));
+            a.moves.emplace_back(from, fs::path(d.folder) / d.attachmentNameOf(a.file, column));
+        }
+        todo.push_back(std::move(a));
+    }
+    // Rows only for entries whose files all moved; data.csv also when a move fails.
+    try {
+        for (auto& a : todo) {
+            for (const auto& [from, to] : a.moves) moveFileInto(from, to);
+            d.record(std::move(a.cells), a.file);
+        }
+    } catch (...) {
+        d.writeCsv();
+        throw;
+    }
     d.writeCsv();
 }
 

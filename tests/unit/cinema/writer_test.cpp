@@ -246,3 +246,137 @@ TEST(CinemaWriter, PngProductsAndAttachmentColumnsReadBackAndResume) {
     EXPECT_THAT(errorOf([&] { CinemaWriter bad(dir.file("bad.cdb"), {"time"}, o); }),
                 HasSubstr("attachment column 'points'"));
 }
+
+TEST(CinemaWriter, CheckRefusesWhatTheConstructorWouldWithoutTouchingAnything) {
+    test::TempDir dir;
+    CinemaWriterOptions create, overwrite, resume;
+    overwrite.overwrite = true;
+    resume.resume = true;
+    // Nothing there: fine, and nothing is created.
+    EXPECT_NO_THROW(CinemaWriter::check(dir.file("new.cdb"), create));
+    EXPECT_FALSE(fs::exists(dir.file("new.cdb")));
+    test::writeText(dir.file("file.cdb"), "");
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("file.cdb"), create); }),
+                HasSubstr("a file of that name exists"));
+
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    const std::string before = test::readText(path + "/data.csv");
+    const std::string refused = errorOf([&] { CinemaWriter::check(path + "/", create); });
+    EXPECT_THAT(refused, HasSubstr("database " + path + " already exists and is not empty"));
+    EXPECT_EQ(refused, errorOf([&] { CinemaWriter w(path, kColumns); }));  // the constructor's words
+    EXPECT_NO_THROW(CinemaWriter::check(path, overwrite));
+    EXPECT_NO_THROW(CinemaWriter::check(path, resume));
+    EXPECT_EQ(test::readText(path + "/data.csv"), before);
+    EXPECT_TRUE(fs::exists(path + "/phi=0_theta=30.exr"));  // overwrite only checked
+    EXPECT_FALSE(fs::exists(path + "/.lock"));
+
+    // Leftovers of an interrupted write count for create, not for resume.
+    fs::create_directories(dir.file("torn.cdb"));
+    test::writeText(dir.file("torn.cdb/phi=0.tmp-12-3.exr"), "torn");
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("torn.cdb"), create); }), HasSubstr("not empty"));
+    EXPECT_NO_THROW(CinemaWriter::check(dir.file("torn.cdb"), resume));
+    EXPECT_TRUE(fs::exists(dir.file("torn.cdb/phi=0.tmp-12-3.exr")));
+
+    fs::create_directories(dir.file("home"));
+    test::writeText(dir.file("home/thesis.tex"), "precious");
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("home"), overwrite); }),
+                HasSubstr("does not look like a Cinema database"));
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("home"), resume); }), HasSubstr("has no data.csv"));
+    EXPECT_EQ(test::readText(dir.file("home/thesis.tex")), "precious");
+    fs::create_directories(dir.file("bad.cdb"));
+    test::writeText(dir.file("bad.cdb/data.csv"), "phi,FILE\n1,\"a\n");
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("bad.cdb"), resume); }), HasSubstr("cannot resume"));
+
+    CinemaWriter holder(dir.file("busy.cdb"), kColumns);
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("busy.cdb"), resume); }),
+                HasSubstr("is being written by another process"));
+    holder.finish();
+    EXPECT_NO_THROW(CinemaWriter::check(dir.file("busy.cdb"), resume));
+}
+
+// Entries written into separate staging databases (as the ranks of an MPI run
+// do) and adopted into one give the database one writer gives, byte for byte.
+TEST(CinemaWriter, AdoptedEntriesMakeTheSameDatabaseAsAddedOnes) {
+    test::TempDir dir;
+    writeGrid(dir.file("direct.cdb"));
+    const auto entries = test::gridEntries();
+    std::vector<CinemaStagedEntry> staged;
+    for (int part = 0; part < 3; ++part) {
+        const std::string folder = dir.file("staging/rank-" + std::to_string(part));
+        CinemaWriter w(folder, kColumns);
+        for (std::size_t k = part; k < entries.size(); k += 3) {
+            w.addEntry(entries[k], *test::gridImage(entries[k]));
+            staged.push_back({entries[k], folder + "/" + w.entryFileName(entries[k]), {}});
+        }
+        w.finish();
+    }
+    {
+        CinemaWriter w(dir.file("merged.cdb"), kColumns);
+        w.adoptEntries(staged);
+        EXPECT_EQ(w.entryCount(), 20u);
+        w.finish();
+    }
+    std::size_t compared = 0;
+    for (const auto& e : fs::directory_iterator(dir.file("direct.cdb"))) {
+        const std::string name = e.path().filename().string();
+        EXPECT_EQ(test::readText(e.path().string()), test::readText(dir.file("merged.cdb/" + name))) << name;
+        ++compared;
+    }
+    EXPECT_EQ(compared, 21u);  // data.csv and 20 products
+    for (const auto& s : staged) EXPECT_FALSE(fs::exists(s.product));  // moved, not copied
+}
+
+TEST(CinemaWriter, AdoptionIsCheckedBeforeAnyFileMovesAndResumes) {
+    test::TempDir dir;
+    CinemaWriterOptions o;
+    o.productExtension = ".png";
+    o.attachments = {{"FILE_points", ".points.csv"}};
+    auto colour = [](double v) {
+        return test::makeImage(4, 3, {"R", "G", "B"}, [=](int, int, int c) { return float(v) * 0.1f * float(c + 1); });
+    };
+    std::vector<CinemaStagedEntry> staged;
+    {
+        CinemaWriter w(dir.file("stage.cdb"), {"time"}, o);
+        for (double t : {3.0, 1.0, 2.0}) {
+            const CinemaParameters p{{"time", CinemaValue(t)}};
+            w.addEntry(p, *colour(t), {{"FILE_points", "x\n" + std::to_string(t) + "\n"}});
+            const std::string product = dir.file("stage.cdb/" + w.entryFileName(p));
+            staged.push_back({p, product, {{"FILE_points", product.substr(0, product.size() - 4) + ".points.csv"}}});
+        }
+        w.finish();
+    }
+    const std::string stagedCsv = test::readText(dir.file("stage.cdb/data.csv"));
+    CinemaWriter w(dir.file("final.cdb"), {"time"}, o);
+    // Bad entries are refused before the first file moves.
+    auto bad = staged;
+    bad[2].product = dir.file("stage.cdb/nothing.png");
+    EXPECT_THAT(errorOf([&] { w.adoptEntries(bad); }), HasSubstr("its product " + bad[2].product + " is missing"));
+    bad = staged;
+    bad[1].attachments.clear();
+    EXPECT_THAT(errorOf([&] { w.adoptEntries(bad); }), HasSubstr("the file for column FILE_points is missing"));
+    bad = staged;
+    bad[1].parameters = {{"time", CinemaValue(1.0)}, {"phi", CinemaValue(0.0)}};
+    EXPECT_THAT(errorOf([&] { w.adoptEntries(bad); }), HasSubstr("'phi' is not a column"));
+    bad = staged;
+    bad[0].parameters = {{"time", CinemaValue("a b")}};  // both named time=a~b.png
+    bad[1].parameters = {{"time", CinemaValue("a~b")}};
+    EXPECT_THAT(errorOf([&] { w.adoptEntries(bad); }), HasSubstr("would share the file"));
+    EXPECT_EQ(w.entryCount(), 0u);
+    for (const auto& s : staged) EXPECT_TRUE(fs::exists(s.product) && fs::exists(s.attachments.at("FILE_points")));
+
+    // The first two, then (after an interruption) a resume adopts the third.
+    w.adoptEntries({staged[0], staged[1]});
+    EXPECT_EQ(test::readText(dir.file("final.cdb/data.csv")),
+              "time,FILE,FILE_points\n"
+              "1,time=1.png,time=1.points.csv\n"
+              "3,time=3.png,time=3.points.csv\n");
+    w.finish();
+    o.resume = true;
+    CinemaWriter again(dir.file("final.cdb"), {"time"}, o);
+    EXPECT_EQ(again.resumedCount(), 2u);
+    again.adoptEntries({staged[2]});
+    again.finish();
+    EXPECT_EQ(test::readText(dir.file("final.cdb/data.csv")), stagedCsv);
+    EXPECT_EQ(test::readText(dir.file("final.cdb/time=2.points.csv")), "x\n2.000000\n");
+}

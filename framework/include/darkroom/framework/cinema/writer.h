@@ -50,6 +50,14 @@ struct CinemaAttachmentColumn {
     std::string suffix;  // appended to the entry's name: ".maxima.csv"
 };
 
+// A finished product (and its attachments) written elsewhere, e.g. into a
+// staging database on the same file system, for adoptEntries to move in.
+struct CinemaStagedEntry {
+    CinemaParameters parameters;
+    std::string product;                             // path of the product file
+    std::map<std::string, std::string> attachments;  // attachment column -> path of its file
+};
+
 struct CinemaWriterOptions {
     // Delete an existing database (it must look like one: have a data.csv)
     // and start afresh.
@@ -80,6 +88,14 @@ public:
     CinemaWriter(const CinemaWriter&) = delete;
     CinemaWriter& operator=(const CinemaWriter&) = delete;
 
+    // Throws what the constructor would throw for the folder `path` with these
+    // options (a file of that name, an existing non-empty folder without
+    // overwrite/resume, overwrite of a folder that is no database, resume of
+    // one whose data.csv cannot be read, another process's lock), without
+    // creating or changing anything there. The columns are not known here: a
+    // resume into other columns is refused by the constructor.
+    static void check(std::string path, const CinemaWriterOptions& options);
+
     const std::string& path() const;
     const std::vector<std::string>& columns() const;
 
@@ -93,6 +109,15 @@ public:
     // attachment columns.
     void addEntry(const CinemaParameters& parameters, const Buffer& image,
                   const std::map<std::string, std::string>& attachments = {});
+
+    // Moves finished files into the database as entries: each product (then
+    // its attachments) is renamed into place under the entry's file name
+    // (copied and renamed when it lies on another file system), replacing an
+    // entry with the same parameters, and data.csv is written once at the end
+    // (an interrupted adoption leaves products no row names, as addEntry
+    // can). Every entry is checked as addEntry checks it, and every file for
+    // existence, before the first file moves. Thread-safe.
+    void adoptEntries(const std::vector<CinemaStagedEntry>& entries);
 
     // Entries in the database now, and how many of them a resume kept.
     std::size_t entryCount() const;

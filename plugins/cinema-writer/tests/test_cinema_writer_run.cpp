@@ -1,0 +1,84 @@
+// CinemaWriter through `darkroom run --foreach` in one process: the database
+// is checked against the node's mode before any entry is shaded, and
+// `--resume` with mode resume does not shade again the entries the database
+// already holds (runs over MPI ranks: mpi/tests/cinema_writer_over_ranks_test.cpp).
+#include "../../../tests/integration/runner/runner_process.h"
+#include "test_support.h"
+
+#include <darkroom/framework/cinema/database.h>
+#include <darkroom/framework/cinema/writer.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kPipeline = R"(darkroom: 1
+nodes:
+  read:
+    type: CinemaReader
+    parameters: {database: source.cdb}
+  write:
+    type: CinemaWriter
+    parameters: {database: shaded.cdb, format: exr}
+edges:
+  - read.image -> write.image
+  - read.row -> write.row
+)";
+
+struct Shading {
+    test::TempDir dir;
+    Shading() {
+        CinemaWriter w(dir.file("source.cdb"), {"time"});
+        for (double t : {1.0, 2.0, 3.0})
+            w.addEntry({{"time", CinemaValue(t)}}, *test::makeImage(6, 4, {"Z", "value"}, [=](int, int, int) {
+                return float(t);
+            }));
+        w.finish();
+        test::writeText(dir.file("shade.yaml"), kPipeline);
+    }
+    test::ProcessResult shade(std::vector<std::string> more = {}) const {
+        std::vector<std::string> args{"-q", "run", dir.file("shade.yaml"), "--foreach", "read", "-o", dir.file("out")};
+        args.insert(args.end(), more.begin(), more.end());
+        return test::runDarkroom(args);
+    }
+};
+
+}  // namespace
+
+TEST(CinemaWriterRun, ACreateRunOntoAnExistingDatabaseIsRefusedBeforeShading) {
+    Shading r;
+    ASSERT_EQ(r.shade().exitCode, 0);
+    // An entry that would fail if it were shaded: the refusal comes first.
+    test::writeText(r.dir.file("source.cdb/time=1.exr"), "broken");
+    const auto again = r.shade();
+    EXPECT_EQ(again.exitCode, 2) << again.err;
+    EXPECT_THAT(again.err, HasSubstr("node 'write' (CinemaWriter): database " + r.dir.file("out/shaded.cdb") +
+                                     " already exists and is not empty"));
+    EXPECT_THAT(again.err, ::testing::Not(HasSubstr("time=1.exr")));
+}
+
+TEST(CinemaWriterRun, ResumeShadesOnlyWhatTheDatabaseLacks) {
+    Shading r;
+    ASSERT_EQ(r.shade().exitCode, 0);
+    const std::string full = test::readText(r.dir.file("out/shaded.cdb/data.csv"));
+    fs::remove(r.dir.file("out/shaded.cdb/time=3.exr"));
+    // The entries the database keeps are not read again: a broken source
+    // product of one of them does not matter.
+    test::writeText(r.dir.file("source.cdb/time=1.exr"), "broken");
+    const auto resumed = r.shade({"--resume", "--set", "write.mode=resume"});
+    EXPECT_EQ(resumed.exitCode, 0) << resumed.err;
+    EXPECT_EQ(test::readText(r.dir.file("out/shaded.cdb/data.csv")), full);
+    EXPECT_TRUE(fs::is_regular_file(r.dir.file("out/shaded.cdb/time=3.exr")));
+    // Without --resume every entry is shaded (and the broken one fails);
+    // with --resume but mode create nothing counts as done.
+    fs::remove(r.dir.file("out/shaded.cdb/time=3.exr"));
+    EXPECT_EQ(r.shade({"--set", "write.mode=resume"}).exitCode, 1);
+    EXPECT_EQ(r.shade({"--resume", "--set", "write.mode=overwrite"}).exitCode, 1);
+}
