@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <new>
 
 int main(int argc, char** argv) {
     using namespace darkroom::cli;
@@ -54,6 +55,13 @@ int main(int argc, char** argv) {
     } catch (const darkroom::Cancelled&) {
         reportError("cancelled");
         return kRuntimeFailure;
+    } catch (const darkroom::InputError& e) {
+        reportError(e.what());
+        return failAllProcesses(kBadInput);
+    } catch (const std::bad_alloc&) {
+        reportError("out of memory (a limit such as --max-image-pixels or --max-node-memory keeps one input "
+                    "or node within bounds)");
+        return failAllProcesses(kRuntimeFailure);
     } catch (const std::exception& e) {
         reportError(e.what());
         return failAllProcesses(kRuntimeFailure);

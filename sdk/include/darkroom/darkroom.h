@@ -7,6 +7,8 @@
 #include <darkroom/context.h>
 #include <darkroom/error.h>
 #include <darkroom/filter.h>
+#include <darkroom/input_file.h>
+#include <darkroom/limits.h>
 #include <darkroom/plugin.h>
 #include <darkroom/port.h>
 #include <darkroom/registrar.h>

@@ -15,6 +15,15 @@ public:
     ~Error() override;
 };
 
+// Bad input: a file, pipeline, value or size that is wrong or beyond a limit
+// (darkroom/limits.h). The runner exits 2 for it, as `validate` does for a
+// bad pipeline; the message names the file, line or node and what was expected.
+class DARKROOM_API InputError : public Error {
+public:
+    explicit InputError(const std::string& what);
+    ~InputError() override;
+};
+
 // Thrown (by the host) when a run was cancelled; never reported as a failure.
 class DARKROOM_API Cancelled : public Error {
 public:
