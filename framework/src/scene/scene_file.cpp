@@ -407,9 +407,9 @@ private:
                 proto.viewHeight = number(h, "height");
                 if (!(proto.viewHeight > 0)) fail(h, "height must be positive (world units)");
                 if (proto.viewHeight > kReach * radius || proto.viewHeight < radius / kReach)
-                    fail(h, "height " + shortNumber(proto.viewHeight) + " is out of proportion to the scene (radius " +
-                                shortNumber(radius) + "): it must lie within " + shortNumber(kReach) +
-                                " times of the radius either way");
+                    fail(h, "height " + shortNumber(proto.viewHeight) + " is out of proportion to the scene: it must lie "
+                                "between " + shortNumber(1 / kReach) + " and " + shortNumber(kReach) +
+                                " times the scene's radius (" + shortNumber(radius) + ")");
             }
             if (n["grid"] && n["list"]) fail(n, "give either 'grid' or 'list' cameras, not both");
             if (n["list"]) return cameraList(n["list"], proto, center, radius);
