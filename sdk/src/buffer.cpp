@@ -6,7 +6,6 @@
 #include <new>
 #include <string_view>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace darkroom {
 
@@ -176,9 +175,9 @@ std::shared_ptr<WritableBuffer> makeHostBuffer(int width, int height) {
 
 std::shared_ptr<WritableBuffer> makeCpuBuffer(int width, int height, std::vector<ChannelDesc> channels) {
     auto b = makeHostBuffer(width, height);
-    std::unordered_set<std::string_view> names;
     for (const auto& c : channels) {
-        if (!names.insert(c.name).second) throw Error("channel '" + c.name + "' appears twice in one image");
+        // plane() looks up by hash (hasChannel() would scan the channels).
+        if (b->plane(c.name)) throw Error("channel '" + c.name + "' appears twice in one image");
         b->setPlane(c, newHostPlane(b->pixelCount(), true));
     }
     return b;

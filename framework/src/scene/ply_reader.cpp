@@ -177,7 +177,7 @@ private:
         if (least > 0 && e.count > cur_.remaining() / least)
             throw InputError(path_ + ":" + std::to_string(e.line) + ": element '" + e.name + "' declares " +
                              std::to_string(e.count) + " entries but the " + std::to_string(cur_.remaining()) +
-                             " bytes after the header hold at most " + std::to_string(cur_.remaining() / least) +
+                             " bytes left in the file hold at most " + std::to_string(cur_.remaining() / least) +
                              " (truncated?)");
     }
 
