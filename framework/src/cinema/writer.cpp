@@ -51,6 +51,9 @@ bool cellLess(const SortCell& a, const SortCell& b) {
     return a.number < b.number;
 }
 
+// The source of the origin items the writer records itself.
+constexpr const char* kLayoutSource = "the database layout";
+
 // What an interrupted atomic write leaves behind: "<stem>.tmp-<pid>-<n><ext>".
 bool isTemporaryLeftover(const std::string& name) {
     std::size_t p = name.find(".tmp-");
@@ -115,10 +118,10 @@ struct CinemaWriter::Impl {
     // attachment files (the columns are compared with data.csv's header).
     std::vector<CinemaOriginItem> origin() const {
         std::vector<CinemaOriginItem> out = options.origin;
-        out.push_back({"the database layout", "products", options.productExtension, false});
+        out.push_back({kLayoutSource, "products", options.productExtension, false});
         std::string attached;
         for (const auto& a : options.attachments) attached += (attached.empty() ? "" : " ") + a.column + ":" + a.suffix;
-        out.push_back({"the database layout", "attachments", attached.empty() ? "none" : attached, false});
+        out.push_back({kLayoutSource, "attachments", attached.empty() ? "none" : attached, false});
         return out;
     }
 
@@ -482,8 +485,11 @@ void CinemaWriter::check(std::string path, const CinemaWriterOptions& options) {
 }
 
 std::vector<CinemaOriginItem> CinemaWriter::recordedOrigin(const std::string& path) {
-    auto recorded = cinema_detail::readMarker(path);
-    return recorded ? *recorded : std::vector<CinemaOriginItem>{};
+    std::vector<CinemaOriginItem> out;
+    if (const auto recorded = cinema_detail::readMarker(path))
+        for (const auto& item : *recorded)
+            if (item.source != kLayoutSource) out.push_back(item);
+    return out;
 }
 
 CinemaWriter::~CinemaWriter() = default;

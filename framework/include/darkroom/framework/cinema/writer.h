@@ -81,14 +81,14 @@ struct CinemaWriterOptions {
     // completes it. Its columns, product format and recorded origin must
     // match; a folder without the marker is refused.
     bool resume = false;
-    // What this database is made from; recorded in the marker, compared by a resume.
-    std::vector<CinemaOriginItem> origin;
     ImageWriteOptions image;  // compression etc. of the products
     // ".exr" (every channel, camera in the header) or an 8-bit format OIIO
     // writes (".png": linear colour sRGB-encoded, see writeImage).
     std::string productExtension = ".exr";
     // Columns after FILE, each with a file per entry (addEntry's attachments).
     std::vector<CinemaAttachmentColumn> attachments;
+    // What this database is made from; recorded in the marker, compared by a resume.
+    std::vector<CinemaOriginItem> origin;
 };
 
 class DARKROOM_API CinemaWriter {
@@ -114,8 +114,9 @@ public:
     // compared here only when options.origin is given.
     static void check(std::string path, const CinemaWriterOptions& options);
 
-    // The origin recorded in the marker of the database at `path` (empty when
-    // it has none), e.g. to carry it from a staging database to the final one.
+    // The origin given to the writer of the database at `path`, as its marker
+    // records it (without the writer's own items; empty when it has none),
+    // e.g. to carry it from a staging database to the final one.
     static std::vector<CinemaOriginItem> recordedOrigin(const std::string& path);
 
     const std::string& path() const;
