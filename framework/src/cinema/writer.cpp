@@ -276,7 +276,6 @@ struct CinemaWriter::Impl {
             return;
         }
         checkMarkerForResume(true);
-        removeTemporaryLeftovers();
         const CsvTable& table = *existing;
         std::vector<std::string> expected = columns;
         expected.push_back("FILE");
@@ -285,6 +284,8 @@ struct CinemaWriter::Impl {
             throw Error(fmt::format("cannot resume {}: its columns are {} but this capture writes {}; "
                                     "use --overwrite to replace it",
                                     folder, fmt::join(table.header, ","), fmt::join(expected, ",")));
+        // Only once nothing refuses the resume: a refusal leaves the folder as it was.
+        removeTemporaryLeftovers();
         const std::size_t extra = options.attachments.size();
         for (const auto& row : table.rows) {
             std::vector<std::string> cells(row.begin(), row.end() - 1 - std::ptrdiff_t(extra));
