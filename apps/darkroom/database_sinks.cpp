@@ -65,6 +65,8 @@ Staged readStaged(const DatabaseSink& sink) {
         if (header.empty()) {
             header = t.header;
             first = part;
+            // What the node recorded there, for the database to record (and a resume to compare).
+            out.options.origin = CinemaWriter::recordedOrigin(part.string());
         } else if (t.header != header) {
             throw Error(fmt::format("the staging databases {} and {} have different columns ({} and {}); they "
                                     "come from different pipelines",

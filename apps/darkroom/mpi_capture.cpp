@@ -1,5 +1,6 @@
 // Distributed capture: every rank ray traces its part of the scene, the
 // G-buffers are composited by depth, rank 0 writes. See capture_over_ranks.h.
+#include "capture_origin.h"
 #include "capture_over_ranks.h"
 #include "processes.h"
 #include "progress_bar.h"
@@ -64,6 +65,7 @@ int captureOverRanks(const GlobalOptions& global, const CaptureSettings& setting
             wo.resume = settings.resume;
             wo.image.compression = settings.compression;
             wo.image.halfFloat = settings.half;
+            wo.origin = captureOrigin(settings.scene, scene, settings.compression, settings.half);
             writer = std::make_unique<CinemaWriter>(settings.output, columns, wo);
             for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
                 CinemaParameters params;

@@ -11,6 +11,7 @@
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <Imath/half.h>
@@ -45,23 +46,58 @@ void checkCompression(const std::string& path, const std::string& compression) {
                    "' (expected none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa or dwab)");
 }
 
-// Writes `spec` and the native-layout pixels to a temporary file, then renames.
+// Formats whose OpenImageIO writer encodes correctly into memory (TIFF's,
+// in OpenImageIO 2.4, writes a file without its image directory there).
+bool encodesInMemory(OIIO::ImageOutput& out) {
+    const std::string name = out.format_name();
+    return out.supports("ioproxy") && (name == "openexr" || name == "png" || name == "jpeg");
+}
+
+// OpenImageIO's stdio writes can drop a failure: a temporary file it wrote
+// must at least open again as an image before it replaces anything.
+bool reopens(const std::string& file) {
+    auto in = OIIO::ImageInput::open(file);
+    if (!in) {
+        (void)OIIO::geterror();
+        return false;
+    }
+    in->close();
+    return true;
+}
+
+// Writes `spec` and the native-layout pixels, then renames into place. A
+// format encoded in memory is written by writeFileAtomic, every write, fsync
+// and close checked; the others write a temporary file themselves, which
+// must reopen before commitFile syncs and renames it.
 void writeAtomically(const std::string& path, OIIO::ImageOutput& out, const OIIO::ImageSpec& spec,
                      OIIO::TypeDesc format, const void* pixels) {
-    const std::string tmp = temporaryPathFor(path);
+    const bool inMemory = encodesInMemory(out);
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    const std::string target = inMemory ? path : temporaryPathFor(path);
     auto oiioFail = [&]() {
         const std::string e = io::oneLine(out.geterror());
         std::error_code ec;
-        fs::remove(tmp, ec);
+        if (!inMemory) fs::remove(target, ec);
         fail(path, e);
     };
-    if (!out.open(tmp, spec)) oiioFail();
+    if (inMemory && !out.set_ioproxy(&memory)) oiioFail();
+    if (!out.open(target, spec)) oiioFail();
     if (!out.write_image(format, pixels)) {
         out.close();
         oiioFail();
     }
     if (!out.close()) oiioFail();
-    commitFile(tmp, path);
+    if (inMemory) {
+        writeFileAtomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+        return;
+    }
+    std::error_code ec;
+    if (fs::file_size(target, ec) == 0 || ec || !reopens(target)) {
+        fs::remove(target, ec);
+        fail(path, "the file OpenImageIO wrote is empty or unreadable (a failed write it did not report)");
+    }
+    commitFile(target, path);
 }
 
 void writeExr(const Buffer& image, const std::string& path, const ImageWriteOptions& options,

@@ -85,7 +85,7 @@ void expectSameCapture(int ranks, const std::string& yaml) {
     const RunResult many = runOnRanks(ranks, {"capture", s.path, "-o", s.dir.file("many.cdb"), "-q"});
     ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
     EXPECT_EQ(compareFolders(s.dir.file("one.cdb"), s.dir.file("many.cdb")), "");
-    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(s.dir.file("one.cdb")), {}), 5);  // data.csv + 4
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(s.dir.file("one.cdb")), {}), 6);  // data.csv, the marker + 4
 }
 
 TEST(CaptureOverRanks, FourRanksWriteTheSingleProcessDatabaseByteForByte) { expectSameCapture(4, kScene); }
@@ -111,6 +111,26 @@ TEST(CaptureOverRanks, AResumedCaptureRendersOnlyWhatIsMissing) {
               std::string::npos)
         << resumed.err;
     EXPECT_EQ(compareFolders(db, reference), "");
+}
+
+// A database begun by one process and resumed over ranks records the same
+// origin; a changed scene file is refused, naming the change, once.
+TEST(CaptureOverRanks, AResumeOfAChangedSceneIsRefusedNamingTheChange) {
+    Scene s;
+    const std::string db = s.dir.file("db.cdb");
+    ASSERT_EQ(runAlone({"capture", s.path, "-o", db, "-q"}).exitCode, 0);
+    std::filesystem::remove(db + "/phi=120_theta=60.exr");
+    std::string yaml = readText(s.path);
+    yaml.replace(yaml.find("[48, 40]"), 8, "[24, 20]");
+    writeText(s.path, yaml);
+    const RunResult r = runOnRanks(4, {"capture", s.path, "-o", db, "--resume"});
+    EXPECT_EQ(r.exitCode, 2);
+    const std::string message = "the scene file changed since the capture began (resolution 48x40 \u2192 24x20)";
+    const auto first = r.err.find(message);
+    ASSERT_NE(first, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(message, first + 1), std::string::npos) << "reported more than once:\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(db + "/.lock"));
+    EXPECT_FALSE(std::filesystem::exists(db + "/phi=120_theta=60.exr"));
 }
 
 TEST(CaptureOverRanks, AnExistingDatabaseIsRefusedOnceWithAClearMessage) {

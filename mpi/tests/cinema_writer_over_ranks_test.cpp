@@ -92,7 +92,7 @@ void expectSameAsOneProcess(int ranks) {
     // The movie was made from the merged database: all five theta=0 entries.
     EXPECT_TRUE(fs::is_regular_file(b.dir.file("many/orbit.mp4")));
     EXPECT_EQ(CinemaDatabase::open(b.dir.file("many/shaded.cdb")).rowCount(), 10u);
-    EXPECT_EQ(std::distance(fs::directory_iterator(b.dir.file("many/buffers.cdb")), {}), 11);
+    EXPECT_EQ(std::distance(fs::directory_iterator(b.dir.file("many/buffers.cdb")), {}), 12);  // + data.csv and the marker
     const RunResult info = runAlone({"info", b.dir.file("many/shaded.cdb")});
     EXPECT_EQ(info.exitCode, 0) << info.err;
     EXPECT_NE(info.out.find("10 rows"), std::string::npos) << info.out;
@@ -116,7 +116,7 @@ TEST(CinemaWriterOverRanks, ARunThatFailedPartWayResumesAndCompletes) {
     const auto partial = CinemaDatabase::open(b.dir.file("out/shaded.cdb"));
     EXPECT_GE(partial.rowCount(), 1u);
     EXPECT_LT(partial.rowCount(), 10u);
-    EXPECT_EQ(std::distance(fs::directory_iterator(b.dir.file("out/shaded.cdb")), {}), long(partial.rowCount()) + 1);
+    EXPECT_EQ(std::distance(fs::directory_iterator(b.dir.file("out/shaded.cdb")), {}), long(partial.rowCount()) + 2);  // + data.csv and the marker
     EXPECT_EQ(readText(b.dir.file("out/shaded.cdb/data.csv")).find("phi=-36_theta=0"), std::string::npos);
     EXPECT_FALSE(fs::exists(b.dir.file("out/shaded.cdb.staging")));
     EXPECT_FALSE(fs::exists(b.dir.file("out/orbit.mp4")));

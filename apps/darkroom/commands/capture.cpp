@@ -1,3 +1,4 @@
+#include "capture_origin.h"
 #include "capture_over_ranks.h"
 #include "commands.h"
 #include "processes.h"
@@ -90,6 +91,8 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             }
             std::unique_ptr<CinemaWriter> writer;
             try {
+                // A resume must find the database made from the same scene and options.
+                wo.origin = captureOrigin(a->scene, scene, a->compression, a->half);
                 writer = std::make_unique<CinemaWriter>(a->output, columns, wo);
             } catch (const Error& e) {
                 reportError(e.what());

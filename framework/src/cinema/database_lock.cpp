@@ -57,9 +57,9 @@ DatabaseLock::DatabaseLock(const std::string& folder) : path_(folder + "/" + kFi
     throw Error(fmt::format("cannot lock '{}': it keeps being replaced by another process", path_));
 }
 
-DatabaseLock::~DatabaseLock() {
-    if (fd_ >= 0) ::close(fd_);
-}
+// Every path out removes the lock file (a refusal too): only a killed
+// process leaves one, and the next writer takes that over.
+DatabaseLock::~DatabaseLock() { releaseAndRemove(); }
 
 void DatabaseLock::releaseAndRemove() {
     if (fd_ < 0) return;

@@ -12,6 +12,7 @@ public:
     // when another process holds it. A lock file left by a killed process is
     // not locked (the kernel drops flock locks with the process) and is taken over.
     explicit DatabaseLock(const std::string& folder);
+    // Removes the lock file as releaseAndRemove() does.
     ~DatabaseLock();
     DatabaseLock(const DatabaseLock&) = delete;
     DatabaseLock& operator=(const DatabaseLock&) = delete;

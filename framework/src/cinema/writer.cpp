@@ -1,6 +1,7 @@
 // The Cinema Spec D writer: products first, then an atomically replaced
 // data.csv, all under a folder lock. See writer.h for the guarantees.
 #include "database_lock.h"
+#include "database_marker.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
@@ -23,6 +24,7 @@ namespace darkroom {
 
 namespace fs = std::filesystem;
 using cinema_detail::DatabaseLock;
+using cinema_detail::kMarkerFileName;
 
 namespace {
 
@@ -48,6 +50,9 @@ bool cellLess(const SortCell& a, const SortCell& b) {
     if (an || bn) return !an && bn;
     return a.number < b.number;
 }
+
+// The source of the origin items the writer records itself.
+constexpr const char* kLayoutSource = "the database layout";
 
 // What an interrupted atomic write leaves behind: "<stem>.tmp-<pid>-<n><ext>".
 bool isTemporaryLeftover(const std::string& name) {
@@ -105,6 +110,40 @@ struct CinemaWriter::Impl {
                                             "are {}",
                                             folder, name, fmt::join(columns, ", ")));
         return cells;
+    }
+
+    std::string markerPath() const { return (fs::path(folder) / kMarkerFileName).string(); }
+
+    // The caller's origin and the writer's own: the product format and the
+    // attachment files (the columns are compared with data.csv's header).
+    std::vector<CinemaOriginItem> origin() const {
+        std::vector<CinemaOriginItem> out = options.origin;
+        out.push_back({kLayoutSource, "products", options.productExtension, false});
+        std::string attached;
+        for (const auto& a : options.attachments) attached += (attached.empty() ? "" : " ") + a.column + ":" + a.suffix;
+        out.push_back({kLayoutSource, "attachments", attached.empty() ? "none" : attached, false});
+        return out;
+    }
+
+    void writeMarker() const { writeFileAtomic(markerPath(), cinema_detail::markerText(origin())); }
+
+    // A resume completes only what Darkroom began from the same origin.
+    void checkMarkerForResume(bool compareOrigin) const {
+        std::optional<std::vector<CinemaOriginItem>> recorded;
+        try {
+            recorded = cinema_detail::readMarker(folder);
+        } catch (const Error& e) {
+            throw Error(fmt::format("cannot resume {}: {}", folder, e.what()));
+        }
+        if (!recorded)
+            throw Error(fmt::format("cannot resume {}: it has no {} file, so Darkroom did not create it (or a "
+                                    "Darkroom older than this check did, which recorded nothing to compare); "
+                                    "capture into a new folder, or remove this one and capture again",
+                                    folder, kMarkerFileName));
+        if (!compareOrigin) return;
+        const std::string change = cinema_detail::describeOriginChange(*recorded, origin());
+        if (!change.empty())
+            throw Error(fmt::format("cannot resume {}: {}; use --overwrite to start afresh", folder, change));
     }
 
     std::string stemOf(const std::vector<std::string>& cells) const {
@@ -195,8 +234,17 @@ struct CinemaWriter::Impl {
     }
 
     void removeTemporaryLeftovers() const {
+        std::error_code ec;
         for (const auto& p : contents())
-            if (isTemporaryLeftover(p.filename().string())) fs::remove_all(p);
+            if (isTemporaryLeftover(p.filename().string()) && fs::is_regular_file(fs::symlink_status(p, ec)))
+                fs::remove(p);
+    }
+
+    // Darkroom's own files besides data.csv: the marker and the leftovers of
+    // interrupted writes.
+    bool isOwnFile(const fs::path& p) const {
+        const std::string name = p.filename().string();
+        return name == kMarkerFileName || isTemporaryLeftover(name);
     }
 
     // The data.csv a resume reads; none when the folder holds nothing else
@@ -204,7 +252,7 @@ struct CinemaWriter::Impl {
     std::optional<CsvTable> resumableTable() const {
         if (!fs::exists(csvPath)) {
             for (const auto& p : contents())
-                if (!isTemporaryLeftover(p.filename().string()))
+                if (!isOwnFile(p))
                     throw Error(fmt::format("cannot resume {}: it has no data.csv, so it is not a Cinema "
                                             "database written by Darkroom; use --overwrite to replace it",
                                             folder));
@@ -221,9 +269,13 @@ struct CinemaWriter::Impl {
     }
 
     void resumeExisting() {
-        removeTemporaryLeftovers();
         const std::optional<CsvTable> existing = resumableTable();
-        if (!existing) return;
+        if (!existing) {
+            // Nothing but what an interrupted start leaves: a fresh database.
+            removeTemporaryLeftovers();
+            return;
+        }
+        checkMarkerForResume(true);
         const CsvTable& table = *existing;
         std::vector<std::string> expected = columns;
         expected.push_back("FILE");
@@ -232,6 +284,8 @@ struct CinemaWriter::Impl {
             throw Error(fmt::format("cannot resume {}: its columns are {} but this capture writes {}; "
                                     "use --overwrite to replace it",
                                     folder, fmt::join(table.header, ","), fmt::join(expected, ",")));
+        // Only once nothing refuses the resume: a refusal leaves the folder as it was.
+        removeTemporaryLeftovers();
         const std::size_t extra = options.attachments.size();
         for (const auto& row : table.rows) {
             std::vector<std::string> cells(row.begin(), row.end() - 1 - std::ptrdiff_t(extra));
@@ -258,13 +312,52 @@ struct CinemaWriter::Impl {
         resumed = entries.size();
     }
 
+    // What --overwrite removes: the files data.csv lists (plain names in the
+    // folder), data.csv, the marker and leftovers of interrupted writes.
+    // Everything else (files of other tools, subfolders) stays.
     void removeForOverwrite(bool apply) const {
-        if (!fs::exists(csvPath))
-            throw Error(fmt::format("refusing to overwrite {}: it is not empty and has no data.csv, so "
-                                    "it does not look like a Cinema database",
-                                    folder));
-        if (apply)
-            for (const auto& p : contents()) fs::remove_all(p);
+        std::optional<std::vector<CinemaOriginItem>> marker;
+        try {
+            marker = cinema_detail::readMarker(folder);
+        } catch (const Error& e) {
+            throw Error(fmt::format("refusing to overwrite {}: {}; nothing was removed", folder, e.what()));
+        }
+        if (!marker)
+            throw Error(fmt::format("refusing to overwrite {}: it has no {} file, so Darkroom did not create it "
+                                    "(or a Darkroom older than this check did); nothing was removed. Remove the "
+                                    "folder yourself if it may go, or write to another folder",
+                                    folder, kMarkerFileName));
+        std::vector<fs::path> doomed;
+        std::error_code ec;
+        if (fs::exists(fs::symlink_status(csvPath, ec))) {
+            CsvTable table;
+            try {
+                table = readCsvFile(csvPath, {});
+            } catch (const Error& e) {
+                throw Error(fmt::format("refusing to overwrite {}: {}, so what Darkroom wrote there is unknown; "
+                                        "nothing was removed",
+                                        folder, e.what()));
+            }
+            for (std::size_t c = 0; c < table.header.size(); ++c) {
+                if (!isCinemaFileColumn(table.header[c])) continue;
+                for (const auto& row : table.rows) {
+                    if (c >= row.size()) continue;
+                    const std::string& name = row[c];
+                    const bool plain = !name.empty() && name != "." && name != ".." &&
+                                       name.find_first_of("/\\") == std::string::npos;
+                    const fs::path p = fs::path(folder) / name;
+                    if (plain && fs::is_regular_file(fs::symlink_status(p, ec))) doomed.push_back(p);
+                }
+            }
+            doomed.push_back(csvPath);
+        }
+        for (const auto& p : contents())
+            if (isTemporaryLeftover(p.filename().string()) && fs::is_regular_file(fs::symlink_status(p, ec)))
+                doomed.push_back(p);
+        if (!apply) return;
+        for (const auto& p : doomed) fs::remove(p);
+        // The marker last: a kill part way leaves a folder still marked as ours.
+        fs::remove(markerPath());
     }
 
     // Called with the lock held: what the folder holds against the mode.
@@ -272,10 +365,11 @@ struct CinemaWriter::Impl {
     void openExisting(bool apply) {
         if (contents().empty()) return;
         if (options.resume) {
-            if (apply)
+            if (apply) {
                 resumeExisting();
-            else
-                resumableTable();
+            } else if (resumableTable()) {
+                checkMarkerForResume(!options.origin.empty());
+            }
         } else if (options.overwrite) {
             removeForOverwrite(apply);
         } else {
@@ -358,9 +452,15 @@ CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnName
     d.lock = std::make_unique<DatabaseLock>(d.folder);
     try {
         d.openExisting(true);
+        // The marker before data.csv: a folder with a data.csv of ours always has one.
+        d.writeMarker();
         d.writeCsv();
     } catch (const fs::filesystem_error& e) {
+        d.lock->releaseAndRemove();
         throw Error(fmt::format("database {}: {}", d.folder, e.what()));
+    } catch (...) {
+        d.lock->releaseAndRemove();
+        throw;
     }
 }
 
@@ -377,13 +477,20 @@ void CinemaWriter::check(std::string path, const CinemaWriterOptions& options) {
     if (!fs::is_directory(d.folder, ec))
         throw Error(fmt::format("cannot write database {}: a file of that name exists", d.folder));
     // Taking the lock is the only way to know that no one holds it.
-    DatabaseLock lock(d.folder);
+    DatabaseLock lock(d.folder);  // removed by its destructor on every path
     try {
         d.openExisting(false);
     } catch (const fs::filesystem_error& e) {
         throw Error(fmt::format("database {}: {}", d.folder, e.what()));
     }
-    lock.releaseAndRemove();
+}
+
+std::vector<CinemaOriginItem> CinemaWriter::recordedOrigin(const std::string& path) {
+    std::vector<CinemaOriginItem> out;
+    if (const auto recorded = cinema_detail::readMarker(path))
+        for (const auto& item : *recorded)
+            if (item.source != kLayoutSource) out.push_back(item);
+    return out;
 }
 
 CinemaWriter::~CinemaWriter() = default;

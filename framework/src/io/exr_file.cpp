@@ -1,6 +1,7 @@
 // EXR through the OpenEXR library (see exr_file.h for why not OpenImageIO).
 #include "exr_file.h"
 
+#include "exr_memory_stream.h"
 #include "exr_metadata.h"
 #include "oiio_message.h"
 
@@ -285,23 +286,20 @@ void writeExr(const Buffer& image, const std::string& path, const ImageWriteOpti
         }
     }
 
-    const std::string tmp = temporaryPathFor(path);
+    // Encoded in memory, then written atomically with every write checked.
+    ExrMemoryStream encoded(path);
     try {
         {
-            Imf::OutputFile file(tmp.c_str(), header, Imf::globalThreadCount());
+            Imf::OutputFile file(encoded, header, Imf::globalThreadCount());
             file.setFrameBuffer(fb);
             file.writePixels(h);
-        }  // closed (and flushed) here
-        commitFile(tmp, path);
-    } catch (const Error&) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw;
+        }  // the offset table is written here
+    } catch (const std::bad_alloc&) {
+        failWrite(path, "not enough memory to encode it");
     } catch (const std::exception& e) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
         failWrite(path, oneLine(e.what(), "unknown OpenEXR error"));
     }
+    writeFileAtomic(path, encoded.bytes());
 }
 
 }  // namespace darkroom::io

@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
+#include <string>
 
 namespace darkroom::io {
 
@@ -21,7 +23,7 @@ namespace {
 // libpng reports errors by longjmp: everything between setjmp and the
 // jump is plain data, so no destructor is skipped.
 struct PngJob {
-    std::FILE* file;
+    std::string* bytes;  // the encoded file
     int width, height, channels;
     const unsigned char* pixels;
     char message[256];
@@ -34,6 +36,22 @@ void onError(png_structp png, png_const_charp text) {
 }
 void onWarning(png_structp, png_const_charp) {}
 
+// The file is encoded in memory and written by writeFileAtomic, whose every
+// write, fsync and close is checked (stdio's buffered writes report a failure
+// late, if at all).
+void onWrite(png_structp png, png_bytep data, png_size_t length) {
+    auto* job = static_cast<PngJob*>(png_get_io_ptr(png));
+    bool appended = true;
+    try {
+        job->bytes->append(reinterpret_cast<const char*>(data), length);
+    } catch (const std::bad_alloc&) {
+        appended = false;
+    }
+    // Outside the handler: png_error longjmps.
+    if (!appended) png_error(png, "not enough memory to encode it");
+}
+void onFlush(png_structp) {}
+
 bool encode(PngJob& job) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, onError, onWarning);
     if (!png) {
@@ -45,7 +63,7 @@ bool encode(PngJob& job) {
         png_destroy_write_struct(&png, &info);
         return false;
     }
-    png_init_io(png, job.file);
+    png_set_write_fn(png, &job, onWrite, onFlush);
     static const int colourTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                                       PNG_COLOR_TYPE_RGB_ALPHA};
     png_set_IHDR(png, info, png_uint_32(job.width), png_uint_32(job.height), 8, colourTypes[job.channels - 1],
@@ -79,20 +97,10 @@ bool isPngPath(const std::string& path) {
 
 void writePng(const Buffer& image, const std::string& path, const ImageWriteOptions& options) {
     const EightBitPixels pixels = encodeEightBit(image, path, options, true);
-    const std::string tmp = temporaryPathFor(path);
-    std::FILE* file = std::fopen(tmp.c_str(), "wb");
-    if (!file) fail(path, std::string("cannot create a temporary file beside it: ") + std::strerror(errno));
-    PngJob job{file, image.width(), image.height(), pixels.channels, pixels.data.data(), {}};
-    const bool encoded = encode(job);
-    const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
-    const int savedErrno = errno;
-    std::fclose(file);
-    if (!encoded || !flushed) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        fail(path, encoded ? std::string("writing failed: ") + std::strerror(savedErrno) : std::string(job.message));
-    }
-    commitFile(tmp, path);
+    std::string bytes;
+    PngJob job{&bytes, image.width(), image.height(), pixels.channels, pixels.data.data(), {}};
+    if (!encode(job)) fail(path, job.message);
+    writeFileAtomic(path, bytes);
 }
 
 }  // namespace darkroom::io

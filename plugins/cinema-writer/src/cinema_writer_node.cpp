@@ -97,6 +97,12 @@ void CinemaWriterNode::execute(Context& ctx) {
         o.productExtension = format == Format::Png ? ".png" : ".exr";
         o.image.compression = compression;
         o.image.channels = channels;
+        // A resume refuses a database these settings did not write (the
+        // product format the writer records itself).
+        std::string channelList;
+        for (const auto& c : channels) channelList += (channelList.empty() ? "" : ",") + c;
+        o.origin.push_back({"the CinemaWriter settings", "channels", channelList.empty() ? "default" : channelList});
+        if (format == Format::Exr) o.origin.push_back({"the CinemaWriter settings", "compression", compression});
         std::error_code ec;
         const auto parent = std::filesystem::path(path).parent_path();
         if (!parent.empty()) std::filesystem::create_directories(parent, ec);

@@ -73,7 +73,7 @@ TEST(CinemaWriterNode, ShadesADatabaseIntoANewOneWithTheSameEntries) {
             // Locked while the run holds it.
             EXPECT_TRUE(fs::exists(target + "/.lock"));
             try {
-                CinemaWriter intruder(target, {"time", "phi"}, CinemaWriterOptions{false, true, {}, ".png", {}});
+                CinemaWriter intruder(target, {"time", "phi"}, CinemaWriterOptions{false, true, {}, ".png", {}, {}});
                 ADD_FAILURE() << "a second writer got in";
             } catch (const Error& e) {
                 EXPECT_THAT(e.what(), HasSubstr("being written by another process"));

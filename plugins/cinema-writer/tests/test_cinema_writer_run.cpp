@@ -82,3 +82,47 @@ TEST(CinemaWriterRun, ResumeShadesOnlyWhatTheDatabaseLacks) {
     EXPECT_EQ(r.shade({"--set", "write.mode=resume"}).exitCode, 1);
     EXPECT_EQ(r.shade({"--resume", "--set", "write.mode=overwrite"}).exitCode, 1);
 }
+
+// The node records its settings in the database it writes: a resume with
+// others is refused, naming what changed, and leaves no lock behind.
+TEST(CinemaWriterRun, ResumeWithOtherSettingsIsRefusedNamingThem) {
+    Shading r;
+    ASSERT_EQ(r.shade().exitCode, 0);
+    const std::string db = r.dir.file("out/shaded.cdb");
+    fs::remove(db + "/time=3.exr");
+    const auto piz = r.shade({"--resume", "--set", "write.mode=resume", "--set", "write.compression=piz"});
+    EXPECT_NE(piz.exitCode, 0);
+    EXPECT_THAT(piz.err, HasSubstr("cannot resume " + db +
+                                   ": the CinemaWriter settings changed since the capture began (compression zip "
+                                   "\u2192 piz)"));
+    EXPECT_FALSE(fs::exists(db + "/.lock"));
+    EXPECT_FALSE(fs::exists(db + "/time=3.exr"));
+    const auto same = r.shade({"--resume", "--set", "write.mode=resume"});
+    EXPECT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_TRUE(fs::is_regular_file(db + "/time=3.exr"));
+}
+
+// mode overwrite removes only what Darkroom wrote, and refuses a folder it
+// did not create before anything is shaded, twice for the same reason.
+TEST(CinemaWriterRun, OverwriteRefusesAForeignFolderAndKeepsOtherFiles) {
+    Shading r;
+    const std::string db = r.dir.file("out/shaded.cdb");
+    fs::create_directories(db);
+    test::writeText(db + "/data.csv", "time,FILE\n1,time=1.exr\n");
+    test::writeText(db + "/time=1.exr", "someone else's");
+    const auto first = r.shade({"--set", "write.mode=overwrite"});
+    EXPECT_EQ(first.exitCode, 2);
+    EXPECT_THAT(first.err, HasSubstr("refusing to overwrite " + db));
+    EXPECT_THAT(first.err, HasSubstr("Darkroom did not create it"));
+    EXPECT_FALSE(fs::exists(db + "/.lock"));
+    EXPECT_EQ(r.shade({"--set", "write.mode=overwrite"}).err, first.err);
+    EXPECT_EQ(test::readText(db + "/time=1.exr"), "someone else's");
+
+    fs::remove_all(db);
+    ASSERT_EQ(r.shade().exitCode, 0);
+    test::writeText(db + "/notes.txt", "mine");
+    const auto again = r.shade({"--set", "write.mode=overwrite"});
+    EXPECT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(test::readText(db + "/notes.txt"), "mine");
+    EXPECT_EQ(CinemaDatabase::open(db).rowCount(), 3u);
+}

@@ -12,9 +12,12 @@ namespace darkroom {
 // A unique name in the same directory (so the rename cannot cross file
 // systems), keeping the extension so format-sniffing writers (OIIO) still work.
 DARKROOM_API std::string temporaryPathFor(const std::string& path);
-// fsyncs the temporary file and renames it over `path`; throws darkroom::Error.
+// fsyncs the temporary file, renames it over `path` and fsyncs the folder;
+// every step checked: throws darkroom::Error naming `path` and the errno text
+// (the temporary file removed).
 DARKROOM_API void commitFile(const std::string& temporary, const std::string& path);
-// Convenience: writes bytes atomically; throws darkroom::Error naming the path.
+// Writes bytes atomically, every write, the fsync and the close checked;
+// throws darkroom::Error naming the path (what was at `path` stays, no temporary file is left).
 DARKROOM_API void writeFileAtomic(const std::string& path, std::string_view bytes);
 
 }  // namespace darkroom

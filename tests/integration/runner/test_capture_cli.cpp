@@ -1,12 +1,15 @@
 // `darkroom capture` and `darkroom info` end to end: the bunny from
 // ../shared/data, and a capture killed with SIGKILL then resumed, which must
 // give the same database, byte for byte, as an uninterrupted one.
+#include "file_size_limit.h"
 #include "runner_process.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -149,4 +152,92 @@ edges:
     EXPECT_TRUE(fs::exists(dir.file("sql/frames/view_phi=90_theta=0.png")));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("sql/frames")), fs::directory_iterator{}), 1);
     EXPECT_EQ(runDarkroom({"run", dir.file("p.yaml"), "--foreach", "colour"}).exitCode, 2);
+}
+
+// A product whose write fails (here: past RLIMIT_FSIZE, EFBIG; on a cluster:
+// EIO, a quota, NFS) stops the capture with an error naming the file, and
+// data.csv never lists it.
+TEST(CaptureCli, AFailedProductWriteExitsNonZeroAndIsNeverListed) {
+    test::TempDir dir;
+    test::writeText(dir.file("s.yaml"), kScene);
+    const std::string db = dir.file("db.cdb");
+    test::ProcessResult r;
+    {
+        test::FileSizeLimit limit(4096);  // data.csv and the marker fit, a product does not
+        r = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "-j", "1"});
+    }
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("cannot write '" + db + "/phi="), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(std::strerror(EFBIG)), std::string::npos) << r.err;
+    EXPECT_EQ(test::readText(db + "/data.csv"), "phi,theta,FILE\n");
+    std::vector<std::string> left;
+    for (const auto& f : fs::directory_iterator(db)) left.push_back(f.path().filename().string());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{".darkroom-database", "data.csv"}));  // no product, lock or temporary
+}
+
+TEST(CaptureCli, ResumeRefusesAChangedSceneNamingTheChange) {
+    test::TempDir dir;
+    const std::string scene = "objects:\n  - generator: isosurface\n    parameters: {resolution: 16}\n"
+                              "cameras:\n  resolution: [64, 64]\n  grid: {phi: 3, theta: 1}\n";
+    test::writeText(dir.file("s.yaml"), scene);
+    const std::string db = dir.file("db.cdb");
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", db}).exitCode, 0);
+    const auto before = folderBytes(db);
+    std::string smaller = scene;
+    smaller.replace(smaller.find("[64, 64]"), 8, "[32, 32]");
+    test::writeText(dir.file("s.yaml"), smaller);
+    const auto r = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("cannot resume " + db +
+                         ": the scene file changed since the capture began (resolution 64x64 \u2192 32x32)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(folderBytes(db), before);
+    EXPECT_FALSE(fs::exists(db + "/.lock"));
+    // Another option, the same scene: named too.
+    test::writeText(dir.file("s.yaml"), scene);
+    const auto piz = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume", "--compression", "piz"});
+    EXPECT_EQ(piz.exitCode, 2);
+    EXPECT_NE(piz.err.find("the capture options changed since the capture began (compression zip \u2192 piz)"),
+              std::string::npos)
+        << piz.err;
+    // The unchanged scene resumes (and has nothing left to do).
+    const auto same = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume"});
+    EXPECT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_EQ(folderBytes(db), before);
+}
+
+TEST(CaptureCli, OverwriteRemovesOnlyItsOwnFilesAndRefusesAForeignFolder) {
+    test::TempDir dir;
+    test::writeText(dir.file("s.yaml"), "objects:\n  - generator: isosurface\n    parameters: {resolution: 16}\n"
+                                        "cameras:\n  resolution: [32, 32]\n  grid: {phi: 3, theta: 1}\n");
+    const std::string db = dir.file("db.cdb");
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", db}).exitCode, 0);
+    test::writeText(db + "/notes.txt", "mine");
+    fs::create_directories(db + "/sub");
+    test::writeText(db + "/sub/keep.txt", "mine too");
+    const auto again = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--overwrite"});
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(test::readText(db + "/notes.txt"), "mine");
+    EXPECT_EQ(test::readText(db + "/sub/keep.txt"), "mine too");
+    EXPECT_EQ(countExr(db), 3u);
+
+    // Not Darkroom's: refused untouched, twice for the same reason, no lock left.
+    const std::string foreign = dir.file("foreign");
+    fs::create_directories(foreign);
+    test::writeText(foreign + "/data.csv", "time,FILE\n0,a.png\n");
+    test::writeText(foreign + "/thesis.tex", "precious");
+    const auto first = runDarkroom({"capture", dir.file("s.yaml"), "-o", foreign, "--overwrite"});
+    EXPECT_EQ(first.exitCode, 2);
+    EXPECT_NE(first.err.find("refusing to overwrite " + foreign), std::string::npos) << first.err;
+    EXPECT_NE(first.err.find("Darkroom did not create it"), std::string::npos) << first.err;
+    EXPECT_FALSE(fs::exists(foreign + "/.lock"));
+    const auto second = runDarkroom({"capture", dir.file("s.yaml"), "-o", foreign, "--overwrite"});
+    EXPECT_EQ(second.err, first.err);
+    EXPECT_EQ(test::readText(foreign + "/thesis.tex"), "precious");
+    EXPECT_EQ(test::readText(foreign + "/data.csv"), "time,FILE\n0,a.png\n");
+    std::size_t entries = 0;
+    for (const auto& f : fs::directory_iterator(foreign)) entries += f.exists();
+    EXPECT_EQ(entries, 2u);
 }

@@ -165,7 +165,7 @@ void expectSameDatabase(const std::map<std::string, std::string>& expected,
 TEST(CinemaKillResume, KilledBetweenEntriesThenResumedEqualsUninterrupted) {
     test::TempDir dir;
     const auto expected = referenceDatabase(dir);
-    ASSERT_EQ(expected.size(), 21u);  // data.csv + 20 products, no lock file
+    ASSERT_EQ(expected.size(), 22u);  // data.csv, the marker + 20 products, no lock file
 
     const std::string db = dir.file("killed.cdb");
     Child c = spawnChild("write", 50, db);

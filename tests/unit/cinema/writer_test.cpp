@@ -122,7 +122,7 @@ TEST(CinemaWriter, OverwriteStartsAfreshButNeverDeletesANonDatabase) {
     fs::create_directories(dir.file("home"));
     test::writeText(dir.file("home/thesis.tex"), "precious");
     const std::string msg = errorOf([&] { CinemaWriter w(dir.file("home"), kColumns, o); });
-    EXPECT_THAT(msg, HasSubstr("does not look like a Cinema database"));
+    EXPECT_THAT(msg, HasSubstr("Darkroom did not create it"));
     EXPECT_EQ(test::readText(dir.file("home/thesis.tex")), "precious");
 }
 
@@ -281,7 +281,7 @@ TEST(CinemaWriter, CheckRefusesWhatTheConstructorWouldWithoutTouchingAnything) {
     fs::create_directories(dir.file("home"));
     test::writeText(dir.file("home/thesis.tex"), "precious");
     EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("home"), overwrite); }),
-                HasSubstr("does not look like a Cinema database"));
+                HasSubstr("Darkroom did not create it"));
     EXPECT_THAT(errorOf([&] { CinemaWriter::check(dir.file("home"), resume); }), HasSubstr("has no data.csv"));
     EXPECT_EQ(test::readText(dir.file("home/thesis.tex")), "precious");
     fs::create_directories(dir.file("bad.cdb"));
@@ -323,7 +323,7 @@ TEST(CinemaWriter, AdoptedEntriesMakeTheSameDatabaseAsAddedOnes) {
         EXPECT_EQ(test::readText(e.path().string()), test::readText(dir.file("merged.cdb/" + name))) << name;
         ++compared;
     }
-    EXPECT_EQ(compared, 21u);  // data.csv and 20 products
+    EXPECT_EQ(compared, 22u);  // data.csv, the marker and 20 products
     for (const auto& s : staged) EXPECT_FALSE(fs::exists(s.product));  // moved, not copied
 }
 

@@ -4,8 +4,9 @@
 // entry (every channel of the buffer, camera in the header).
 //
 // Safety: every product and every version of data.csv is written atomically
-// (temporary file, fsync, rename), a product before the row that names it, so
-// a process killed at any moment leaves a valid database. Rows are kept sorted
+// (temporary file, fsync, rename, fsync of the folder), a product before the
+// row that names it, so a process killed at any moment leaves a valid
+// database; a write that fails throws before the row is added. Rows are kept sorted
 // by their parameter values, so the final data.csv does not depend on the
 // order entries were added in or on how often the capture was interrupted.
 #include <darkroom/buffer.h>
@@ -58,13 +59,27 @@ struct CinemaStagedEntry {
     std::map<std::string, std::string> attachments;  // attachment column -> path of its file
 };
 
+// One fact about what a database is made from (the scene file's content, the
+// resolution, a capture option), recorded in the folder's marker file
+// (.darkroom-database) so that a resume can refuse a database made from
+// something else, naming what changed.
+struct CinemaOriginItem {
+    std::string source;    // what it belongs to, in messages: "the scene file", "the capture options"
+    std::string key;       // "resolution"
+    std::string value;     // "64x64"
+    bool summary = false;  // compared, but named only when nothing else of its source differs (a content hash)
+};
+
 struct CinemaWriterOptions {
-    // Delete an existing database (it must look like one: have a data.csv)
-    // and start afresh.
+    // Remove an existing database Darkroom created (its folder holds the
+    // marker file .darkroom-database): the files its data.csv lists, data.csv,
+    // the marker and leftovers of interrupted writes, nothing else; and start
+    // afresh. A folder without the marker is refused untouched.
     bool overwrite = false;
     // Keep the entries of an existing database whose products exist, drop
     // the rest and the leftovers of an interrupted write; addEntry then
-    // completes it. Its columns must match.
+    // completes it. Its columns, product format and recorded origin must
+    // match; a folder without the marker is refused.
     bool resume = false;
     ImageWriteOptions image;  // compression etc. of the products
     // ".exr" (every channel, camera in the header) or an 8-bit format OIIO
@@ -72,6 +87,8 @@ struct CinemaWriterOptions {
     std::string productExtension = ".exr";
     // Columns after FILE, each with a file per entry (addEntry's attachments).
     std::vector<CinemaAttachmentColumn> attachments;
+    // What this database is made from; recorded in the marker, compared by a resume.
+    std::vector<CinemaOriginItem> origin;
 };
 
 class DARKROOM_API CinemaWriter {
@@ -93,8 +110,14 @@ public:
     // overwrite/resume, overwrite of a folder that is no database, resume of
     // one whose data.csv cannot be read, another process's lock), without
     // creating or changing anything there. The columns are not known here: a
-    // resume into other columns is refused by the constructor.
+    // resume into other columns is refused by the constructor; the origin is
+    // compared here only when options.origin is given.
     static void check(std::string path, const CinemaWriterOptions& options);
+
+    // The origin given to the writer of the database at `path`, as its marker
+    // records it (without the writer's own items; empty when it has none),
+    // e.g. to carry it from a staging database to the final one.
+    static std::vector<CinemaOriginItem> recordedOrigin(const std::string& path);
 
     const std::string& path() const;
     const std::vector<std::string>& columns() const;
@@ -126,7 +149,8 @@ public:
     std::string entryFileName(const CinemaParameters& parameters) const;
 
     // Writes data.csv a last time and releases and removes the lock file.
-    // Further addEntry calls throw.
+    // Further addEntry calls throw. A writer destroyed without finish() (an
+    // error) also removes its lock file.
     void finish();
 
 private:

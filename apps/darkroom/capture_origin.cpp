@@ -1,0 +1,67 @@
+#include "capture_origin.h"
+
+#include <darkroom/input_file.h>
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <set>
+
+namespace darkroom::cli {
+
+namespace {
+
+// FNV-1a: it tells a changed file from an unchanged one; it is not meant
+// to resist a forger.
+struct Hash {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    void add(std::string_view s) {
+        for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ull;
+        h = (h ^ 0xff) * 0x100000001b3ull;  // a separator, so ("ab","c") differs from ("a","bc")
+    }
+    void add(double v) { add(fmt::format("{}", v)); }
+    std::string hex() const { return fmt::format("{:016x}", h); }
+};
+
+}  // namespace
+
+std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const SceneDescription& scene,
+                                            const std::string& compression, bool half) {
+    const std::string scenePart = "the scene file", options = "the capture options";
+    std::set<std::string> sizes;
+    Hash poses;
+    for (const auto& c : scene.cameras) {
+        sizes.insert(fmt::format("{}x{}", c.camera.width, c.camera.height));
+        for (const auto& [k, v] : c.parameters) {
+            poses.add(k);
+            poses.add(v);
+        }
+        const Camera& m = c.camera;
+        for (double v : {m.position.x, m.position.y, m.position.z, m.forward.x, m.forward.y, m.forward.z, m.up.x,
+                         m.up.y, m.up.z, m.fovYDegrees, m.viewHeight})
+            poses.add(v);
+        poses.add(m.projection == Camera::Projection::Perspective ? "perspective" : "orthographic");
+    }
+    std::string resolution;
+    for (const auto& s : sizes) resolution += (resolution.empty() ? "" : ",") + s;
+    std::string channels;
+    auto addChannel = [&](const std::string& c) { channels += (channels.empty() ? "" : ",") + c; };
+    for (const auto& s : scene.request.scalars) addChannel(s);
+    if (scene.request.normals) addChannel("normals");
+    if (scene.request.objectId) addChannel("objectId");
+    if (scene.request.primitiveId) addChannel("primitiveId");
+    Hash content;
+    content.add(readInputFile(sceneFile, "scene file"));
+    return {
+        {scenePart, "resolution", resolution.empty() ? "none" : resolution, false},
+        {scenePart, "cameras", std::to_string(scene.cameras.size()), false},
+        {scenePart, "channels", channels.empty() ? "depth only" : channels, false},
+        {scenePart, "backend", scene.backend, false},
+        {scenePart, "camera poses", poses.hex(), true},
+        {scenePart, "content", content.hex(), true},
+        {options, "compression", compression, false},
+        {options, "half floats", half ? "yes" : "no", false},
+    };
+}
+
+}  // namespace darkroom::cli
