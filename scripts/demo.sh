@@ -11,6 +11,10 @@ export DARKROOM_BUILD_DIR=${DARKROOM_BUILD_DIR:-$root/build}
 darkroom="$DARKROOM_BUILD_DIR/bin/darkroom"
 mkdir -p "$root/out/demo"
 for part in surface flow particles; do
+  db="$root/out/demo/$part.cdb"
+  # out/demo is this script's own folder: a database there without the marker
+  # file was written by a Darkroom older than it, which --overwrite refuses.
+  if [ -d "$db" ] && [ ! -f "$db/.darkroom-database" ]; then rm -rf "$db"; fi
   "$darkroom" capture "$root/docs/examples/demo/$part.yaml" --output "$root/out/demo/$part.cdb" --overwrite
 done
 "$darkroom" run "$root/docs/examples/demo.yaml" --output "$root/out"
