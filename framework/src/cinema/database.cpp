@@ -62,6 +62,12 @@ CinemaDatabase CinemaDatabase::open(const std::string& path, const CsvReadOption
         if (!fs::exists(db.csvPath_, ec))
             throw Error(fmt::format("'{}' is not a Cinema database: it has no data.csv", path));
     } else if (fs::exists(path, ec)) {
+        // A mesh or image given where a database was meant would otherwise be
+        // read as a one-column table of its bytes.
+        if (fs::path(path).extension() != ".csv")
+            throw InputError(fmt::format("'{}' is not a Cinema database: expected a folder holding data.csv, or a "
+                                         ".csv file",
+                                         path));
         db.csvPath_ = path;
         db.folder_ = fs::path(path).parent_path().string();
         if (db.folder_.empty()) db.folder_ = ".";

@@ -14,6 +14,7 @@
 
 #include <sys/stat.h>
 
+#include <fstream>
 #include <string>
 
 using namespace darkroom;
@@ -101,6 +102,18 @@ TEST(HostileCsv, SpecialFilesAreRefusedWithoutBlocking) {
     EXPECT_THAT(inputError([&] { CinemaDatabase::open(dir.path()); }), HasSubstr(fifo));
     EXPECT_THAT(inputError([&] { readCsvFile("/dev/zero"); }), HasSubstr("'/dev/zero': it is a character device"));
     EXPECT_THAT(inputError([&] { readCsvFile(dir.path()); }), HasSubstr("it is a directory"));
+}
+
+TEST(HostileCsv, AFileThatIsNotACsvIsNotReadAsADatabase) {
+    // `darkroom info mesh.vtp` once printed the mesh's bytes as a column name.
+    test::TempDir dir;
+    const std::string mesh = dir.file("deep.vtp");
+    { std::ofstream(mesh) << "<VTKFile type=\"PolyData\"></VTKFile>\n"; }
+    EXPECT_THAT(inputError([&] { CinemaDatabase::open(mesh); }),
+                HasSubstr("'" + mesh + "' is not a Cinema database: expected a folder holding data.csv"));
+    const std::string csv = dir.file("table.csv");
+    { std::ofstream(csv) << "phi\n0\n"; }
+    EXPECT_EQ(CinemaDatabase::open(csv).rowCount(), 1u);
 }
 
 TEST(HostileProduct, NpzOfAMillionComponentsIsReadInLinearTime) {
