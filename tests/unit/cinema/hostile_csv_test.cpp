@@ -1,6 +1,7 @@
 // Regressions for data.csv and products found by fuzzing (issue 18): inputs
 // that made the reader hang or grow without bound, and special files, which
 // must be refused at once with an InputError naming the path.
+#include "input_error.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
@@ -18,26 +19,8 @@
 #include <string>
 
 using namespace darkroom;
+using darkroom::test::inputError;
 using ::testing::HasSubstr;
-
-namespace {
-
-std::string inputError(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const InputError& e) {
-        const std::string msg = e.what();
-        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
-        return msg;
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "not an InputError: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
-
-}  // namespace
 
 TEST(HostileCsv, LoneCarriageReturnsEndLines) {
     // Old Mac line ends: rows, not one header holding every cell.

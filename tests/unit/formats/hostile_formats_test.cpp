@@ -1,6 +1,7 @@
 // Regressions for the .vti and .npy/.npz readers (issue 18): forged sizes are
 // refused from the header before anything is allocated or inflated, special
 // files are refused without blocking. Every input is built here.
+#include "input_error.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
@@ -18,25 +19,11 @@
 #include <functional>
 
 using namespace darkroom;
+using darkroom::test::inputError;
 using ::testing::HasSubstr;
 
 namespace {
 
-// The message of the InputError fn throws ("" and a test failure otherwise).
-std::string inputError(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const InputError& e) {
-        const std::string msg = e.what();
-        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
-        return msg;
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "not an InputError: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
 
 std::string vti(const std::string& wholeExtent, const std::string& body) {
     return "<VTKFile type=\"ImageData\" version=\"1.0\">\n<ImageData WholeExtent=\"" + wholeExtent +

@@ -1,6 +1,7 @@
 // Regressions for the image readers (issue 18): sizes are checked from the
 // header before a pixel is allocated, and special files are refused at once.
 // The forged headers (PNG with its CRCs, TGA, SGI) are written here.
+#include "input_error.h"
 #include "test_support.h"
 
 #include <darkroom/colormap.h>
@@ -19,24 +20,11 @@
 #include <string>
 
 using namespace darkroom;
+using darkroom::test::inputError;
 using ::testing::HasSubstr;
 
 namespace {
 
-std::string inputError(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const InputError& e) {
-        const std::string msg = e.what();
-        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
-        return msg;
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "not an InputError: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
 
 void putBE32(std::string& s, std::uint32_t v) {
     for (int b = 3; b >= 0; --b) s += char((v >> (8 * b)) & 0xff);
