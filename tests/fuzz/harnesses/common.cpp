@@ -23,13 +23,15 @@ void removeScratch() {
 }  // namespace
 
 const std::string& scratchFolder() {
-    static const std::string folder = [] {
+    // Never destroyed: the exit handler that removes the folder runs after
+    // function-local statics constructed before its registration are gone.
+    static const std::string* folder = [] {
         const fs::path dir = fs::temp_directory_path() / ("darkroom-fuzz-" + std::to_string(::getpid()));
         fs::create_directories(dir);
         std::atexit(removeScratch);
-        return dir.string();
+        return new std::string(dir.string());
     }();
-    return folder;
+    return *folder;
 }
 
 std::string writeInput(const std::uint8_t* data, std::size_t size, const std::string& name) {
