@@ -1,6 +1,7 @@
 // darkroom: the headless runner. Lists and describes plugins, validates and
 // runs pipelines, captures scenes into Cinema databases and describes them. Exit codes: 0 success, 1 runtime failure, 2 bad usage or input.
 #include "commands.h"
+#include "limit_options.h"
 #include "processes.h"
 
 #include <darkroom/error.h>
@@ -9,6 +10,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <new>
 
 int main(int argc, char** argv) {
@@ -29,6 +32,8 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", global.quiet, "No progress output");
     app.add_flag("--progress", global.progress,
                  "Draw the progress bar even when stderr is not a terminal (under mpirun, where rank 0 alone draws it)");
+
+    addLimitOptions(app);
 
     Runner run;
     addPluginsCommand(app, global, run);
@@ -62,8 +67,17 @@ int main(int argc, char** argv) {
         reportError("out of memory (a limit such as --max-image-pixels or --max-node-memory keeps one input "
                     "or node within bounds)");
         return failAllProcesses(kRuntimeFailure);
-    } catch (const std::exception& e) {
+    } catch (const darkroom::Error& e) {
         reportError(e.what());
+        return failAllProcesses(kRuntimeFailure);
+    } catch (const std::filesystem::filesystem_error& e) {
+        // "filesystem error: cannot create directories: ..." names the path and the reason.
+        reportError(e.what());
+        return failAllProcesses(kRuntimeFailure);
+    } catch (const std::exception& e) {
+        // Not an error Darkroom meant to report (std::out_of_range, a
+        // library's own exception): said so, rather than its raw text alone.
+        reportError(std::string("unexpected internal failure (please report it with the command line): ") + e.what());
         return failAllProcesses(kRuntimeFailure);
     }
 }

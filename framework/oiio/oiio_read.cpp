@@ -6,6 +6,8 @@
 #include "../src/io/oiio_message.h"
 
 #include <darkroom/error.h>
+#include <darkroom/input_file.h>
+#include <darkroom/limits.h>
 #include <darkroom/srgb.h>
 
 #include <OpenImageIO/imageio.h>
@@ -68,7 +70,7 @@ std::vector<int> channelPermutation(const std::vector<std::string>& names,
 std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) fail(path, "no such file");
-    if (fs::is_directory(path, ec)) fail(path, "it is a directory");
+    requireRegularFile(path, "image");  // a FIFO or a device would block OpenImageIO
 
     // Straight alpha, as the graph keeps it: no premultiplication on read.
     OIIO::ImageSpec config;
@@ -83,6 +85,11 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
 
     const int nch = spec.nchannels;
     const int w = spec.width, h = spec.height;
+    // Sizes come from the header: checked before a pixel is allocated (the
+    // buffer, and the scratch a run of channels is read into).
+    checkImagePixels(std::uint64_t(w), std::uint64_t(h), path);
+    checkBytes(Limit::DecodedBytes, std::uint64_t(w) * std::uint64_t(h) * std::uint64_t(nch) * 4, path,
+               std::to_string(nch) + " channels");
     std::vector<std::string> names(static_cast<std::size_t>(nch));
     std::vector<Kind> kinds(static_cast<std::size_t>(nch));
     for (int c = 0; c < nch; ++c) {
@@ -153,6 +160,7 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
 }
 
 io::ImageHeader readHeader(const std::string& path) {
+    requireRegularFile(path, "image");
     auto in = OIIO::ImageInput::open(path);
     if (!in) fail(path, oiioError(nullptr));
     const OIIO::ImageSpec& spec = in->spec();

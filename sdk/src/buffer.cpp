@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace darkroom {
 
@@ -102,9 +105,8 @@ public:
         return i < 0 ? nullptr : static_cast<const std::uint32_t*>(planes_[std::size_t(i)]->data());
     }
     PlanePtr plane(std::string_view n) const override {
-        for (std::size_t i = 0; i < channels_.size(); ++i)
-            if (channels_[i].name == n) return planes_[i];
-        return nullptr;
+        const int i = indexOf(n);
+        return i < 0 ? nullptr : planes_[std::size_t(i)];
     }
     float* writeFloat(std::string_view n) override {
         if (void* p = writable(find(n, ChannelType::Float32))) return static_cast<float*>(p);
@@ -119,29 +121,34 @@ public:
         if (p->pixels() != pixelCount())
             throw Error("channel '" + c.name + "': a plane of " + std::to_string(p->pixels()) +
                         " values does not fit a " + std::to_string(w_) + "x" + std::to_string(h_) + " image");
-        for (std::size_t i = 0; i < channels_.size(); ++i)
-            if (channels_[i].name == c.name) {
-                channels_[i] = c;
-                planes_[i] = std::move(p);
-                return;
-            }
+        if (const int i = indexOf(c.name); i >= 0) {
+            channels_[std::size_t(i)] = c;
+            planes_[std::size_t(i)] = std::move(p);
+            return;
+        }
+        index_.emplace(c.name, channels_.size());
         channels_.push_back(c);
         planes_.push_back(std::move(p));
     }
     void removeChannel(std::string_view n) override {
-        for (std::size_t i = 0; i < channels_.size(); ++i)
-            if (channels_[i].name == n) {
-                channels_.erase(channels_.begin() + std::ptrdiff_t(i));
-                planes_.erase(planes_.begin() + std::ptrdiff_t(i));
-                return;
-            }
+        const int i = indexOf(n);
+        if (i < 0) return;
+        channels_.erase(channels_.begin() + std::ptrdiff_t(i));
+        planes_.erase(planes_.begin() + std::ptrdiff_t(i));
+        index_.clear();
+        for (std::size_t k = 0; k < channels_.size(); ++k) index_.emplace(channels_[k].name, k);
     }
 
 private:
+    // By name through a hash index: an image of a million channels (a forged
+    // .npz of shape (1, 1, 1000000)) is built in linear time, not quadratic.
+    int indexOf(std::string_view n) const {
+        const auto it = index_.find(n);
+        return it == index_.end() ? -1 : int(it->second);
+    }
     int find(std::string_view n, ChannelType t) const {
-        for (std::size_t i = 0; i < channels_.size(); ++i)
-            if (channels_[i].name == n) return channels_[i].type == t ? int(i) : -1;
-        return -1;
+        const int i = indexOf(n);
+        return i >= 0 && channels_[std::size_t(i)].type == t ? i : -1;
     }
     void* writable(int i) {
         if (i < 0) return nullptr;
@@ -153,6 +160,11 @@ private:
     int w_, h_;
     std::vector<ChannelDesc> channels_;
     std::vector<PlanePtr> planes_;
+    struct NameHash {
+        using is_transparent = void;
+        std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+    };
+    std::unordered_map<std::string, std::size_t, NameHash, std::equal_to<>> index_;  // name -> position in channels_
     BufferMetadata meta_;
 };
 
@@ -164,8 +176,9 @@ std::shared_ptr<WritableBuffer> makeHostBuffer(int width, int height) {
 
 std::shared_ptr<WritableBuffer> makeCpuBuffer(int width, int height, std::vector<ChannelDesc> channels) {
     auto b = makeHostBuffer(width, height);
+    std::unordered_set<std::string_view> names;
     for (const auto& c : channels) {
-        if (b->hasChannel(c.name)) throw Error("channel '" + c.name + "' appears twice in one image");
+        if (!names.insert(c.name).second) throw Error("channel '" + c.name + "' appears twice in one image");
         b->setPlane(c, newHostPlane(b->pixelCount(), true));
     }
     return b;

@@ -2,6 +2,7 @@
 // databases): RGBPoints are sRGB-encoded and x is in data units.
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
+#include <darkroom/input_file.h>
 #include <darkroom/srgb.h>
 
 #include <nlohmann/json.hpp>
@@ -10,8 +11,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace darkroom::detail {
 
@@ -98,13 +97,11 @@ ColorMapData loadParaViewColorMap(const std::string& path) {
         for (const auto& n : colorMapPresets()) names += (names.empty() ? "" : ", ") + n;
         fail(path, "no such file, and not a preset name (" + names + ")");
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path, ec)) fail(path, "cannot open the file");
-    std::stringstream text;
-    text << in.rdbuf();
+    // A FIFO, a device or a directory is refused (InputError), not read without end.
+    const std::string text = readInputFile(path, "colour map");
     Json doc;
     try {
-        doc = Json::parse(text.str());
+        doc = Json::parse(text);
     } catch (const Json::exception& e) {
         // nlohmann's message carries the line and column.
         fail(path, std::string("not valid JSON: ") + e.what());

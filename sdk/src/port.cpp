@@ -134,8 +134,8 @@ void checkValue(const PortSpec& port, const Value& v) {
                 if (std::isnan(d)) break;
                 if ((port.minimum && d < *port.minimum) || (port.maximum && d > *port.maximum))
                     fail("value " + formatValue(port.type, v) + " is outside the allowed range [" +
-                         formatValue(PortType::Float, *port.minimum) + ", " +
-                         formatValue(PortType::Float, *port.maximum) + "]");
+                         (port.minimum ? formatValue(PortType::Float, *port.minimum) : std::string("-inf")) + ", " +
+                         (port.maximum ? formatValue(PortType::Float, *port.maximum) : std::string("inf")) + "]");
                 break;
             }
             case PortType::Bool: (void)v.asBool(); break;

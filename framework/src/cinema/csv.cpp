@@ -2,14 +2,13 @@
 // file with a thousand short rows yields one warning, not a thousand.
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/csv.h>
+#include <darkroom/input_file.h>
 
 #include <fmt/format.h>
 
 #include <array>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace darkroom {
 
@@ -150,13 +149,20 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
     bool haveHeader = false;
     int lineNo = 0;
     std::size_t pos = 0;
+    // Short rows are padded to the header's width. A forged file (a header of
+    // a million commas, then a million one-cell rows) would turn a few MB into
+    // 10^12 cells, so padding is bounded by what the file itself could hold.
+    const std::size_t paddingBudget = 4 * text.size() + (std::size_t(1) << 22);
+    std::size_t padded = 0;
     while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
+        // Lines end in \n, \r\n or a lone \r (old Mac exports): a file of \r
+        // line ends is rows, not one header of every cell.
+        std::size_t end = text.find_first_of("\r\n", pos);
         if (end == std::string_view::npos) end = text.size();
         std::string_view line = text.substr(pos, end - pos);
         pos = end + 1;
+        if (end < text.size() && text[end] == '\r' && pos < text.size() && text[pos] == '\n') ++pos;  // CRLF
         ++lineNo;
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF
         if (trim(line).empty()) continue;  // blank lines (often the last) carry nothing
 
         std::vector<std::string> cells = splitLine(line, lineNo, log);
@@ -178,6 +184,13 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
             log.add(Irregularity::ShortRow, lineNo, fmt::format("{} of {} cells", cells.size(), n));
         else if (cells.size() > n)
             log.add(Irregularity::LongRow, lineNo, fmt::format("{} of {} cells", cells.size(), n));
+        if (cells.size() < n) {
+            padded += n - cells.size();
+            if (padded > paddingBudget)
+                throw InputError(fmt::format("{}:{}: short rows padded to the header's {} columns would add more than "
+                                             "{} empty cells to a file of {} bytes; expected rows as wide as the header",
+                                             source, lineNo, n, paddingBudget, text.size()));
+        }
         cells.resize(n);
         table.rows.push_back(std::move(cells));
         table.rowLines.push_back(lineNo);
@@ -191,12 +204,8 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
 }
 
 CsvTable readCsvFile(const std::string& path, const CsvReadOptions& options) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(fmt::format("cannot read '{}': no such file or not readable", path));
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw Error(fmt::format("cannot read '{}': read error", path));
-    return parseCsv(ss.str(), path, options);
+    // A FIFO or a device would block or never end: refused by readInputFile.
+    return parseCsv(readInputFile(path, "CSV table"), path, options);
 }
 
 }  // namespace darkroom

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <string_view>
+#include <unordered_set>
 
 namespace darkroom {
 
@@ -109,11 +111,12 @@ CinemaDatabase CinemaDatabase::open(const std::string& path, const CsvReadOption
             db.numbers_[c] = std::move(values);
         } else {
             col.minimum = col.maximum = kNaN;
+            // Hashed: a column of n distinct strings is linear, not n^2 comparisons.
+            std::unordered_set<std::string_view> seen;
             for (const auto& row : db.table_.rows) {
                 const std::string& s = row[c];
                 if (s.empty()) ++col.missing;
-                if (std::find(col.distinct.begin(), col.distinct.end(), s) == col.distinct.end())
-                    col.distinct.push_back(s);
+                if (seen.insert(s).second) col.distinct.push_back(s);
             }
         }
     }

@@ -5,9 +5,13 @@
 #include <cctype>
 #include <tuple>
 #include <atomic>
+#include <cmath>
+#include <optional>
 #include <functional>
 #include <map>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace darkroom {
 
@@ -25,6 +29,22 @@ Diagnostic nodeError(const std::string& node, std::string message,
     d.message = std::move(message);
     d.node = node;
     return d;
+}
+
+// A parameter a user wrote (pipeline file, --set, the editor). checkValue
+// lets NaN through, because values flowing along edges may be NaN (a colour
+// range of no data); a written NaN, or an infinity, compares false with
+// both ends of a declared range and would pass it unchecked.
+void checkParameter(const PortSpec& spec, const Value& v) {
+    checkValue(spec, v);
+    if (spec.type != PortType::Float || (!spec.minimum && !spec.maximum)) return;
+    const double d = v.asFloat();
+    if (std::isfinite(d)) return;
+    auto bound = [](const std::optional<double>& b, const char* none) {
+        return b ? formatValue(PortType::Float, Value(*b)) : std::string(none);
+    };
+    throw Error("port '" + spec.name + "': " + formatValue(PortType::Float, v) + " is not a number in the allowed range [" +
+                bound(spec.minimum, "-inf") + ", " + bound(spec.maximum, "inf") + "]");
 }
 
 std::string portNames(const std::vector<PortSpec>& ports) {
@@ -69,6 +89,7 @@ Node& Graph::addPlaceholder(const std::string& name, const std::string& type) {
     n.type = type;
     n.placeholder = true;
     nodes_.push_back(std::move(n));
+    nodeIndex_[name] = nodes_.size() - 1;
     touch(nodes_.back());
     return nodes_.back();
 }
@@ -81,6 +102,7 @@ void Graph::removeNode(const std::string& name) {
         if (e.from.node == name) downstream.insert(e.to.node);
     std::erase_if(edges_, [&](const Edge& e) { return e.from.node == name || e.to.node == name; });
     nodes_.erase(it);
+    reindex();
     for (const auto& d : downstream)
         if (Node* n = node(d)) touch(*n);
     ++revision_;
@@ -96,20 +118,35 @@ void Graph::renameNode(const std::string& from, const std::string& to) {
         if (e.from.node == from) e.from.node = to;
         if (e.to.node == from) e.to.node = to;
     }
-    touch(*n);
+    reindex();
+    touch(*node(to));
 }
 
-const Node* Graph::node(const std::string& name) const {
+void Graph::reindex() {
+    nodeIndex_.clear();
+    edgesFrom_.clear();
+    edgesTo_.clear();
+    for (std::size_t i = 0; i < nodes_.size(); ++i) nodeIndex_[nodes_[i].name] = i;
+    for (std::size_t i = 0; i < edges_.size(); ++i) {
+        edgesFrom_[edges_[i].from.node].push_back(i);
+        edgesTo_[edges_[i].to.node].push_back(i);
+    }
+}
+
+const Node* Graph::findNode(const std::string& name) const {
+    if (auto it = nodeIndex_.find(name); it != nodeIndex_.end() && it->second < nodes_.size() &&
+                                         nodes_[it->second].name == name)
+        return &nodes_[it->second];
+    // Not indexed under this name: a caller may have renamed a node through
+    // the pointer node() returns, so look the slow way.
     for (const auto& n : nodes_)
         if (n.name == name) return &n;
     return nullptr;
 }
 
-Node* Graph::node(const std::string& name) {
-    for (auto& n : nodes_)
-        if (n.name == name) return &n;
-    return nullptr;
-}
+const Node* Graph::node(const std::string& name) const { return findNode(name); }
+
+Node* Graph::node(const std::string& name) { return const_cast<Node*>(findNode(name)); }
 
 const PortList& Graph::ports(const Node& n) const {
     if (n.placeholder) return kNoPorts;
@@ -129,7 +166,7 @@ void Graph::setParameter(const std::string& nodeName, const std::string& port, V
         throw Error("node '" + nodeName + "': input '" + port + "' is an image; connect it instead");
     if (spec->type == PortType::Float && std::holds_alternative<std::int64_t>(value.storage()))
         value = Value(value.asFloat());
-    checkValue(*spec, value);
+    checkParameter(*spec, value);
     for (auto& [k, v] : n->parameters)
         if (k == port) {
             if (v == value) return;  // unchanged: keep the cache
@@ -175,20 +212,15 @@ bool Graph::canConnect(const Endpoint& from, const Endpoint& to, std::string* wh
     if (!compatible(out->type, in->type))
         return fail("cannot connect " + from.str() + " (" + toString(out->type) + ") to " + to.str() +
                     " (" + toString(in->type) + "): types differ");
-    for (const auto& e : edges_) {
-        if (e.from == from && e.to == to) return fail("already connected");
-        if (e.to == to && !in->multiple) return fail("input " + to.str() + " is already connected to " + e.from.str());
-    }
-    // A new edge b <- a closes a cycle if a already depends on b.
-    std::set<std::string> seen;
-    std::function<bool(const std::string&)> reaches = [&](const std::string& n) {
-        if (n == to.node) return true;
-        if (!seen.insert(n).second) return false;
-        for (const auto& e : edges_)
-            if (e.to.node == n && reaches(e.from.node)) return true;
-        return false;
-    };
-    if (reaches(from.node)) return fail("connecting " + from.str() + " to " + to.str() + " would create a cycle");
+    if (auto it = edgesTo_.find(to.node); it != edgesTo_.end())
+        for (const std::size_t i : it->second) {
+            const Edge& e = edges_[i];
+            if (e.from == from && e.to == to) return fail("already connected");
+            if (e.to == to && !in->multiple)
+                return fail("input " + to.str() + " is already connected to " + e.from.str());
+        }
+    if (closesCycle(from.node, to.node))
+        return fail("connecting " + from.str() + " to " + to.str() + " would create a cycle");
     return true;
 }
 
@@ -200,6 +232,8 @@ void Graph::connect(const Endpoint& from, const Endpoint& to) {
 
 void Graph::addEdgeUnchecked(const Edge& e) {
     edges_.push_back(e);
+    edgesFrom_[e.from.node].push_back(edges_.size() - 1);
+    edgesTo_[e.to.node].push_back(edges_.size() - 1);
     if (Node* n = node(e.to.node)) touch(*n);
     ++revision_;
 }
@@ -208,21 +242,50 @@ void Graph::disconnect(const Endpoint& from, const Endpoint& to) {
     const auto before = edges_.size();
     std::erase_if(edges_, [&](const Edge& e) { return e.from == from && e.to == to; });
     if (edges_.size() == before) throw Error("no connection from " + from.str() + " to " + to.str());
+    reindex();
     if (Node* n = node(to.node)) touch(*n);
 }
 
 std::vector<Edge> Graph::edgesInto(const std::string& n, const std::string& port) const {
     std::vector<Edge> out;
-    for (const auto& e : edges_)
-        if (e.to.node == n && e.to.port == port) out.push_back(e);
+    if (auto it = edgesTo_.find(n); it != edgesTo_.end())
+        for (const std::size_t i : it->second)
+            if (edges_[i].to.port == port) out.push_back(edges_[i]);
     return out;
 }
 
 std::vector<Edge> Graph::edgesInto(const std::string& n) const {
     std::vector<Edge> out;
-    for (const auto& e : edges_)
-        if (e.to.node == n) out.push_back(e);
+    if (auto it = edgesTo_.find(n); it != edgesTo_.end())
+        for (const std::size_t i : it->second) out.push_back(edges_[i]);
     return out;
+}
+
+bool Graph::closesCycle(const std::string& from, const std::string& to) const {
+    // An edge from -> to closes a cycle if `from` already depends on `to`.
+    // Searched from both ends at once (downstream of `to`, upstream of
+    // `from`), so a graph built in either order costs little per edge.
+    if (from == to) return true;
+    std::unordered_set<std::string> down{to}, up{from};
+    std::vector<std::string> downQueue{to}, upQueue{from};
+    auto step = [&](std::vector<std::string>& queue, std::unordered_set<std::string>& seen,
+                    const std::unordered_map<std::string, std::vector<std::size_t>>& index, bool downstream,
+                    const std::string& goal) {
+        const std::string n = std::move(queue.back());
+        queue.pop_back();
+        if (auto it = index.find(n); it != index.end())
+            for (const std::size_t i : it->second) {
+                const std::string& next = downstream ? edges_[i].to.node : edges_[i].from.node;
+                if (next == goal) return true;
+                if (seen.insert(next).second) queue.push_back(next);
+            }
+        return false;
+    };
+    while (!downQueue.empty() && !upQueue.empty()) {
+        if (step(downQueue, down, edgesFrom_, true, from)) return true;
+        if (!upQueue.empty() && step(upQueue, up, edgesTo_, false, to)) return true;
+    }
+    return false;
 }
 
 Diagnostics Graph::validate() const {
@@ -241,7 +304,7 @@ Diagnostics Graph::validate() const {
                 continue;
             }
             try {
-                checkValue(*spec, v);
+                checkParameter(*spec, v);
             } catch (const Error& e) {
                 out.push_back(nodeError(n.name, e.what()));
             }
@@ -296,27 +359,47 @@ Diagnostics Graph::validate() const {
 }
 
 std::vector<std::string> Graph::topologicalOrder() const {
-    std::map<std::string, int> state;  // 0 new, 1 on stack, 2 done
+    // Depth-first over the edges into each node, without recursion (a long
+    // chain would otherwise take as many stack frames as it has nodes).
+    std::unordered_map<std::string, int> state;  // 0 new, 1 on stack, 2 done
     std::vector<std::string> order;
-    std::vector<std::string> stack;
-    std::function<void(const std::string&)> visit = [&](const std::string& n) {
-        int& s = state[n];
-        if (s == 2) return;
-        if (s == 1) {
-            std::string cycle;
-            auto it = std::find(stack.begin(), stack.end(), n);
-            for (; it != stack.end(); ++it) cycle += *it + " -> ";
-            throw Error("cycle in the graph: " + cycle + n);
-        }
-        s = 1;
-        stack.push_back(n);
-        for (const auto& e : edges_)
-            if (e.to.node == n && node(e.from.node)) visit(e.from.node);
-        stack.pop_back();
-        state[n] = 2;
-        order.push_back(n);
+    struct Frame {
+        const std::string* name;
+        std::size_t next = 0;  // position in its list of incoming edges
     };
-    for (const auto& n : nodes_) visit(n.name);
+    std::vector<Frame> stack;
+    static const std::vector<std::size_t> kNone;
+    auto incoming = [&](const std::string& n) -> const std::vector<std::size_t>& {
+        auto it = edgesTo_.find(n);
+        return it == edgesTo_.end() ? kNone : it->second;
+    };
+    for (const auto& root : nodes_) {
+        if (state[root.name] != 0) continue;
+        state[root.name] = 1;
+        stack.push_back({&root.name});
+        while (!stack.empty()) {
+            Frame& f = stack.back();
+            const auto& in = incoming(*f.name);
+            if (f.next == in.size()) {
+                state[*f.name] = 2;
+                order.push_back(*f.name);
+                stack.pop_back();
+                continue;
+            }
+            const std::string& up = edges_[in[f.next++]].from.node;
+            if (!findNode(up)) continue;
+            int& s = state[up];
+            if (s == 2) continue;
+            if (s == 1) {
+                std::string cycle;
+                auto it = std::find_if(stack.begin(), stack.end(), [&](const Frame& x) { return *x.name == up; });
+                for (; it != stack.end(); ++it) cycle += *it->name + " -> ";
+                throw Error("cycle in the graph: " + cycle + up);
+            }
+            s = 1;
+            stack.push_back({&up});
+        }
+    }
     return order;
 }
 

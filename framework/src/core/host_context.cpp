@@ -4,19 +4,40 @@
 
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
+#include <darkroom/limits.h>
 #include <darkroom/framework/registry.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace darkroom {
 
 namespace fs = std::filesystem;
 
-HostContext::HostContext(Setup setup) : s_(std::move(setup)) {
+namespace {
+
+// "1.2 GiB", for messages about --max-node-memory.
+std::string humanBytes(std::uint64_t b) {
+    const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+    double v = double(b);
+    int u = 0;
+    while (v >= 1024 && u < 4) {
+        v /= 1024;
+        ++u;
+    }
+    char buf[48];
+    if (u == 0) std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(b));
+    else std::snprintf(buf, sizeof buf, "%.3g %s", v, units[u]);
+    return buf;
+}
+
+}  // namespace
+
+HostContext::HostContext(Setup setup) : s_(std::move(setup)), timeLimitMs_(limit(Limit::NodeMilliseconds)) {
     if (!s_.ports) return;
     for (const auto& p : s_.ports->inputs) {
         if (p.type != PortType::Image) continue;
@@ -82,12 +103,18 @@ void HostContext::readsFile(const std::string& path) {
 }
 
 std::shared_ptr<HostPlane> HostContext::newPlane(std::size_t pixels, Fill fill) {
-    bytes_ += pixels * 4;
+    const std::size_t total = bytes_ += pixels * 4;
+    // Checked before the memory is taken, so a node over the limit fails
+    // without first pushing the machine into swap.
+    if (const std::uint64_t cap = limit(Limit::NodeBytes); cap != 0 && total > cap)
+        throw InputError("allocated " + humanBytes(total) + " of image planes, over " +
+                         limitOption(Limit::NodeBytes) + " " + humanBytes(cap));
     return PlanePool::shared().acquire(pixels, fill);
 }
 
 std::shared_ptr<WritableBuffer> HostContext::allocate(int width, int height, std::vector<ChannelDesc> channels,
                                                       Fill fill) {
+    if (width > 0 && height > 0) checkImagePixels(std::uint64_t(width), std::uint64_t(height), "a new image");
     auto out = makeHostBuffer(width, height);
     for (const auto& c : channels) {
         if (out->hasChannel(c.name)) throw Error("channel '" + c.name + "' appears twice in one image");
@@ -154,7 +181,14 @@ void HostContext::progress(double fraction) {
     if (s_.onProgress) s_.onProgress(std::clamp(fraction, 0.0, 1.0));
 }
 
-bool HostContext::cancelled() const { return s_.cancelFlag && s_.cancelFlag->load(std::memory_order_relaxed); }
+bool HostContext::cancelled() const {
+    return (s_.cancelFlag && s_.cancelFlag->load(std::memory_order_relaxed)) || overTime();
+}
+
+bool HostContext::overTime() const {
+    return timeLimitMs_ != 0 &&
+           std::chrono::steady_clock::now() - start_ > std::chrono::milliseconds(std::int64_t(timeLimitMs_));
+}
 
 void HostContext::warn(std::string_view message) {
     if (s_.onWarning) s_.onWarning(std::string(message));

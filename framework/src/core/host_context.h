@@ -12,6 +12,7 @@
 #include <darkroom/port.h>
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -72,6 +73,10 @@ public:
     const Derivation* derivation(const Buffer* b) const;
     const std::vector<std::string>& filesRead() const { return files_; }
     std::size_t bytesAllocated() const { return bytes_.load(); }
+    // Whether the node has run past limit(Limit::NodeMilliseconds) since this
+    // context was made; cancelled() turns true then too, so the node stops
+    // at its next check (each row block of parallelFor).
+    bool overTime() const;
     const Setup& setup() const { return s_; }
 
 private:
@@ -87,6 +92,8 @@ private:
     std::map<const Buffer*, Derivation> derivations_;
     std::vector<std::string> files_;
     std::atomic<std::size_t> bytes_{0};
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::uint64_t timeLimitMs_ = 0;  // 0: none
 };
 
 }  // namespace darkroom

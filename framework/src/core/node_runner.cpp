@@ -5,11 +5,14 @@
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
+#include <darkroom/limits.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 namespace darkroom {
 
@@ -142,23 +145,42 @@ NodeResult runNode(const NodeCall& call) {
         if (in.type == PortType::Image && !in.optional && !in.multiple && !setup.inputs.count(in.name))
             throw Error(label + ": input '" + in.name + "' is not connected");
 
+    std::unique_lock<std::mutex> typeGuard;
+    if (call.filter->threadSafety() == ThreadSafety::Unsafe)
+        typeGuard = std::unique_lock<std::mutex>(typeLock(call.type));
+    // The node's time limit counts from here, after any wait for the type lock.
     HostContext ctx(std::move(setup));
     const auto t0 = std::chrono::steady_clock::now();
+    auto overTime = [&] {
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", double(limit(Limit::NodeMilliseconds)) / 1000.0);
+        return InputError(label + ": ran past " + limitOption(Limit::NodeMilliseconds) + " " + seconds);
+    };
     try {
-        std::unique_lock<std::mutex> typeGuard;
-        if (call.filter->threadSafety() == ThreadSafety::Unsafe)
-            typeGuard = std::unique_lock<std::mutex>(typeLock(call.type));
         call.filter->execute(ctx);
     } catch (const Cancelled&) {
+        if (ctx.overTime()) throw overTime();
         throw;
+    } catch (const InputError& e) {
+        // Bad input the node found (a missing file, a size over a limit): the
+        // runner exits 2 for it, as for a bad pipeline.
+        throw InputError(label + ": " + e.what());
+    } catch (const Error& e) {
+        throw Error(label + ": " + e.what());
     } catch (const std::bad_alloc&) {
-        throw Error(label + ": ran out of memory");
+        throw Error(label + ": ran out of memory (" + limitOption(Limit::NodeBytes) +
+                    " fails such a node before it takes the machine's memory)");
+    } catch (const std::logic_error& e) {
+        // A programming error in the node or a library it calls
+        // (std::out_of_range: "map::at"): named as such, not shown bare.
+        throw Error(label + ": unexpected failure inside the node (a bug; please report it): " + e.what());
     } catch (const std::exception& e) {
         // One error boundary for every call into a plugin.
         throw Error(label + ": " + e.what());
     } catch (...) {
         throw Error(label + ": failed with an unknown exception");
     }
+    if (ctx.overTime()) throw overTime();
     if (ctx.cancelled()) throw Cancelled();
 
     NodeResult r;

@@ -1,5 +1,8 @@
+#include "yaml_guard.h"
+
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
+#include <darkroom/input_file.h>
 #include <darkroom/framework/pipeline.h>
 
 #include <yaml-cpp/yaml.h>
@@ -36,6 +39,12 @@ struct Reader {
 
 bool needsQuotes(const std::string& s);
 std::string quoted(const std::string& s);
+
+// "; did you mean 'parameters'?" when `key` looks like a misspelling of a valid key.
+std::string suggestion(const std::string& key, const std::vector<std::string>& valid) {
+    const std::string near = yamlguard::nearestKey(key, valid);
+    return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
+}
 
 // One-line YAML text for a value the host does not interpret (placeholder
 // parameters, editor layout), so saving writes back what was read. Scalars
@@ -140,6 +149,13 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
         for (auto kv = body.begin(); kv != body.end(); ++kv) {
             const std::string key = kv->first.Scalar();
             if (key == "type") continue;
+            // Other keys are kept for the editor (ui:), but one that is a
+            // misspelling of the host's own would silently lose its content.
+            if (key != "parameters" && !yamlguard::nearestKey(key, {"type", "parameters"}).empty()) {
+                r.error(kv->first.Mark(), "node '" + name + "' has an unknown key '" + key + "'" +
+                                              suggestion(key, {"type", "parameters"}), name);
+                continue;
+            }
             if (key != "parameters") {
                 n->extras.emplace_back(key, flowText(kv->second));
                 continue;
@@ -162,10 +178,15 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
                 const PortSpec* spec = g.ports(*cur).input(port);
                 if (!spec) {
                     std::string names;
+                    std::vector<std::string> valid;
                     for (const auto& in : g.ports(*cur).inputs)
-                        if (in.type != PortType::Image) names += (names.empty() ? "" : ", ") + in.name;
+                        if (in.type != PortType::Image) {
+                            names += (names.empty() ? "" : ", ") + in.name;
+                            valid.push_back(in.name);
+                        }
                     r.error(p->first.Mark(), "node '" + name + "' (" + cur->type + ") has no parameter '" + port +
-                                                 "'; parameters: " + (names.empty() ? "none" : names), name);
+                                                 "'" + suggestion(port, valid) +
+                                                 "; parameters: " + (names.empty() ? "none" : names), name);
                     continue;
                 }
                 std::string text;
@@ -270,7 +291,7 @@ Graph parsePipeline(const std::string& text, const std::string& sourceName, cons
     Reader r{sourceName, diagnostics};
     YAML::Node root;
     try {
-        root = YAML::Load(text);
+        root = yamlguard::load(text);
     } catch (const YAML::Exception& e) {
         r.error(e.mark, "malformed YAML: " + e.msg);
         return g;
@@ -301,7 +322,9 @@ Graph parsePipeline(const std::string& text, const std::string& sourceName, cons
         for (auto it = root.begin(); it != root.end(); ++it) {
             const std::string key = it->first.Scalar();
             if (key != "darkroom" && key != "nodes" && key != "edges")
-                r.warning(it->first.Mark(), "unknown top-level key '" + key + "' ignored");
+                r.error(it->first.Mark(), "unknown top-level key '" + key + "'" +
+                                              suggestion(key, {"darkroom", "nodes", "edges"}) +
+                                              " (expected darkroom, nodes and edges)");
         }
         if (const YAML::Node nodes = root["nodes"]) readNodes(g, nodes, r);
         if (const YAML::Node edges = root["edges"]) readEdges(g, edges, r);
@@ -312,17 +335,20 @@ Graph parsePipeline(const std::string& text, const std::string& sourceName, cons
 }
 
 Graph loadPipeline(const std::string& path, const Registry& registry, Diagnostics& diagnostics) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::string text;
+    try {
+        // Refuses FIFOs, devices, directories and files over --max-input-bytes.
+        text = readInputFile(path, "pipeline");
+    } catch (const Error& e) {
         Diagnostic d;
         d.where = path;
-        d.message = "cannot open the pipeline file (does it exist?)";
+        d.message = e.what();
+        // The message names the path already; keep one mention of it.
+        if (d.message.rfind(path + ": ", 0) == 0) d.message = d.message.substr(path.size() + 2);
         diagnostics.push_back(d);
         return Graph(registry);
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return parsePipeline(ss.str(), path, registry, diagnostics);
+    return parsePipeline(text, path, registry, diagnostics);
 }
 
 std::string serializePipeline(const Graph& g) {

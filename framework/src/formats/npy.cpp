@@ -3,6 +3,7 @@
 // converted to float32 in C order.
 #include <darkroom/error.h>
 #include <darkroom/framework/formats/npy.h>
+#include <darkroom/limits.h>
 
 #include <fmt/format.h>
 
@@ -179,13 +180,21 @@ float convert(const unsigned char* p, const DType& t) {
     return 0;
 }
 
+// The number of values; refused when it (times 16, room for any dtype's bytes) overflows.
 std::size_t product(const std::vector<std::size_t>& shape, const std::string& where) {
     std::size_t n = 1;
-    for (std::size_t d : shape) {
-        if (d != 0 && n > std::numeric_limits<std::size_t>::max() / 16 / d)
-            throw Error(fmt::format("{}: shape is too large", where));
-        n *= d;
-    }
+    for (std::size_t d : shape)
+        if (d != 0 && n > std::numeric_limits<std::size_t>::max() / 16 / d) {
+            std::string text;
+            for (std::size_t k : shape) text += (text.empty() ? "" : ", ") + std::to_string(k);
+            throw InputError(fmt::format("{}: shape ({}) holds more values than can be addressed; expected an "
+                                         "array that fits in memory",
+                                         where, text));
+        } else {
+            n *= d;
+        }
+    for (std::size_t d : shape)
+        if (d == 0) return 0;
     return n;
 }
 
@@ -217,8 +226,10 @@ NpyHeader parseNpyHeader(std::string_view bytes, const std::string& where) {
         throw Error(fmt::format("{}: .npy header claims {} bytes but the member has only {}", where, length,
                                 bytes.size() - offset));
     NpyHeader h = DictParser(bytes.substr(offset, length), where).parse();
-    parseDescr(h.descr, where);  // validates
+    const DType t = parseDescr(h.descr, where);  // validates
     h.dataOffset = offset + length;
+    product(h.shape, where);  // refuses a shape whose size overflows
+    h.dataBytes = product(h.shape, where) * t.size;
     return h;
 }
 
@@ -230,6 +241,7 @@ NpyArray parseNpy(std::string_view bytes, const std::string& where) {
     a.shape = h.shape;
     a.fortranOrder = h.fortranOrder;
     const std::size_t n = product(h.shape, where);
+    checkBytes(Limit::DecodedBytes, std::uint64_t(n) * sizeof(float), where, "decoded array");
     const std::size_t have = bytes.size() - h.dataOffset;
     if (have < n * t.size)
         throw Error(fmt::format("{}: data is truncated: shape needs {} values of {} bytes ({}), the member "

@@ -2,6 +2,8 @@
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/framework/formats/npy.h>
+#include <darkroom/input_file.h>
+#include <darkroom/limits.h>
 
 #include <fmt/format.h>
 #include <zip.h>
@@ -27,6 +29,7 @@ std::string zipErrorText(int code) {
 }
 
 ZipHandle openArchive(const std::string& path) {
+    requireRegularFile(path, ".npz archive");
     int code = 0;
     zip_t* z = zip_open(path.c_str(), ZIP_RDONLY, &code);
     if (!z)
@@ -42,8 +45,10 @@ std::string memberName(const std::string& file) {
                : file;
 }
 
-// Reads member i. `limit` caps how many bytes are read (headers only need the start).
-std::string readMember(zip_t* z, zip_uint64_t i, const std::string& where, std::size_t limit) {
+// Reads member i. `limit` caps how many bytes are read (headers only need the
+// start); a prefix read (`whole` false) returns what there is when the member
+// ends or breaks before, so that its header can still be checked.
+std::string readMember(zip_t* z, zip_uint64_t i, const std::string& where, std::size_t limit, bool whole = true) {
     zip_stat_t st;
     zip_stat_init(&st);
     if (zip_stat_index(z, i, 0, &st) != 0 || !(st.valid & ZIP_STAT_SIZE))
@@ -55,6 +60,7 @@ std::string readMember(zip_t* z, zip_uint64_t i, const std::string& where, std::
     std::size_t got = 0;
     while (got < want) {
         const zip_int64_t n = zip_fread(f, bytes.data() + got, want - got);
+        if (n < 0 && !whole && got > 0) break;
         if (n < 0) {
             const std::string why = zip_file_strerror(f);
             zip_fclose(f);
@@ -64,9 +70,44 @@ std::string readMember(zip_t* z, zip_uint64_t i, const std::string& where, std::
         got += std::size_t(n);
     }
     zip_fclose(f);
-    if (got != want)
+    if (!whole) bytes.resize(got);
+    else if (got != want)
         throw Error(fmt::format("{}: the member ends after {} of {} bytes", where, got, want));
     return bytes;
+}
+
+// The member's uncompressed size as the zip directory states it.
+std::uint64_t memberSize(zip_t* z, zip_uint64_t i, const std::string& where) {
+    zip_stat_t st;
+    zip_stat_init(&st);
+    if (zip_stat_index(z, i, 0, &st) != 0 || !(st.valid & ZIP_STAT_SIZE))
+        throw Error(fmt::format("{}: cannot read the member's size: {}", where, zip_strerror(z)));
+    return st.size;
+}
+
+// The header, read from the member's start; version 2 and 3 headers may exceed 64 KiB.
+NpyHeader memberHeader(zip_t* z, zip_uint64_t i, const std::string& where) {
+    constexpr std::size_t kMaxHeader = std::size_t(1) << 24;
+    std::string bytes = readMember(z, i, where, 1 << 16, false);
+    if (bytes.size() >= 12 && bytes.compare(0, 6, "\x93NUMPY") == 0 && bytes[6] != 1) {
+        std::size_t length = 0;
+        for (int k = 3; k >= 0; --k) length = (length << 8) | static_cast<unsigned char>(bytes[8 + std::size_t(k)]);
+        if (length > kMaxHeader)
+            throw InputError(fmt::format("{}: .npy header claims {} bytes; expected at most {}", where, length, kMaxHeader));
+        if (12 + length > bytes.size()) bytes = readMember(z, i, where, 12 + length, false);
+    }
+    return parseNpyHeader(bytes, where);
+}
+
+// Before a member is read whole: the zip directory's size must be what the
+// header's shape needs, and within the decoded-bytes limit.
+void checkMemberSize(const NpyHeader& h, std::uint64_t size, const std::string& where) {
+    const std::uint64_t needed = std::uint64_t(h.dataOffset) + h.dataBytes;
+    if (size != needed)
+        throw InputError(fmt::format("{}: the zip directory gives the member {} bytes, but its header ({} bytes) "
+                                     "and shape ({} bytes of values) make {}",
+                                     where, size, h.dataOffset, h.dataBytes, needed));
+    checkBytes(Limit::DecodedBytes, size, where, "member");
 }
 
 template <class Fn>
@@ -89,15 +130,14 @@ std::vector<NpyArray> eachMember(const std::string& path, Fn&& fn) {
 
 std::vector<NpyArray> readNpz(const std::string& path) {
     return eachMember(path, [](zip_t* z, zip_uint64_t i, const std::string& where) {
+        checkMemberSize(memberHeader(z, i, where), memberSize(z, i, where), where);
         return parseNpy(readMember(z, i, where, std::size_t(-1)), where);
     });
 }
 
 std::vector<NpyArray> readNpzHeaders(const std::string& path) {
     return eachMember(path, [](zip_t* z, zip_uint64_t i, const std::string& where) {
-        // Version 1 headers are below 64 KiB; later versions seldom exceed it.
-        std::string bytes = readMember(z, i, where, 1 << 16);
-        const NpyHeader h = parseNpyHeader(bytes, where);
+        const NpyHeader h = memberHeader(z, i, where);
         NpyArray a;
         a.descr = h.descr;
         a.shape = h.shape;

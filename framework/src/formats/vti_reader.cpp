@@ -5,6 +5,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/framework/formats/vti.h>
+#include <darkroom/limits.h>
 
 #include <fmt/format.h>
 
@@ -70,7 +71,7 @@ float ttkDepthToPlanar(float d, double nearPlane, double farPlane) {
 }
 
 VtiImage readVti(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "image");
     const mesh::VtkXmlDocument doc = mesh::parseVtkXml(data, path);
     const mesh::XmlElement& root = *doc.root;
     if (root.name != "VTKFile") fail(path, root, "expected <VTKFile> as the root element, got <" + root.name + ">");
@@ -80,10 +81,15 @@ VtiImage readVti(const std::string& path) {
     const mesh::XmlElement* image = root.child("ImageData");
     if (!image) fail(path, root, "missing <ImageData>");
     const auto whole = extent(path, *image, "WholeExtent");
-    const long long W = whole[1] - whole[0] + 1, H = whole[3] - whole[2] + 1;
-    if (W < 1 || H < 1 || W > (1 << 20) || H > (1 << 20) || whole[5] != whole[4])
-        fail(path, *image, fmt::format("WholeExtent {} {} {} {} {} {} is not a 2-D image (expected one z slice)",
-                                       whole[0], whole[1], whole[2], whole[3], whole[4], whole[5]));
+    // Sizes in checked 64-bit arithmetic: extents near the integer limits would overflow.
+    long long W = 0, H = 0;
+    const bool overflow = __builtin_sub_overflow(whole[1], whole[0], &W) || __builtin_add_overflow(W, 1, &W) ||
+                          __builtin_sub_overflow(whole[3], whole[2], &H) || __builtin_add_overflow(H, 1, &H);
+    if (overflow || W < 1 || H < 1 || W > (1 << 20) || H > (1 << 20) || whole[5] != whole[4])
+        throw InputError(fmt::format("{}:{}: WholeExtent {} {} {} {} {} {} is not a 2-D image (expected x0 <= x1 and "
+                                     "y0 <= y1 at most 1048576 apart, and one z slice)",
+                                     path, image->line, whole[0], whole[1], whole[2], whole[3], whole[4], whole[5]));
+    checkImagePixels(std::uint64_t(W), std::uint64_t(H), fmt::format("{}:{}: WholeExtent", path, image->line));
     const mesh::XmlElement* piece = image->child("Piece");
     if (!piece) fail(path, *image, "missing <Piece>");
     if (extent(path, *piece, "Extent") != whole)
@@ -131,7 +137,7 @@ VtiImage readVti(const std::string& path) {
     if (const mesh::XmlElement* pd = piece->child("PointData"))
         for (const auto& c : pd->children)
             if (c->name == "DataArray") {
-                arrays.push_back(mesh::readVtkDataArray(*c, enc));
+                arrays.push_back(mesh::readVtkDataArray(*c, enc, std::size_t(W * H)));
                 const auto& a = arrays.back();
                 if (a.values.size() != std::size_t(W * H) * std::size_t(a.components))
                     fail(path, *c, fmt::format("DataArray '{}' has {} values; expected {} x {} pixels x {} components",

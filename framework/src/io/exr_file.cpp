@@ -6,6 +6,8 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
+#include <darkroom/input_file.h>
+#include <darkroom/limits.h>
 
 #include <IlmThreadPool.h>
 #include <ImfChannelList.h>
@@ -110,7 +112,7 @@ std::vector<FileChannel> inStoredOrder(std::vector<FileChannel> channels, const 
 void checkReadable(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) failRead(path, "no such file");
-    if (fs::is_directory(path, ec)) failRead(path, "it is a directory");
+    requireRegularFile(path, "image");  // a FIFO or a device would block OpenEXR
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multiPart)) failRead(path, "not an OpenEXR file");
     if (deep) failRead(path, "deep images are not supported");
@@ -206,6 +208,10 @@ std::shared_ptr<WritableBuffer> readExr(const std::string& path) {
         }
         const std::vector<FileChannel> channels = inStoredOrder(channelsOf(header, path), order);
         if (channels.empty()) failRead(path, "the image has no channels");
+        // From the header, before a pixel is allocated.
+        checkImagePixels(std::uint64_t(size.width), std::uint64_t(size.height), path);
+        checkBytes(Limit::DecodedBytes, std::uint64_t(size.width) * std::uint64_t(size.height) * channels.size() * 4,
+                   path, std::to_string(channels.size()) + " channels");
         std::vector<ChannelDesc> desc;
         for (const auto& c : channels) desc.push_back({c.name, bufferType(c.type)});
         auto buffer = makeCpuBuffer(size.width, size.height, desc);

@@ -7,6 +7,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/framework/image_io.h>
+#include <darkroom/input_file.h>
 
 #include <algorithm>
 #include <cctype>
@@ -19,13 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // Before anything opens the file: a FIFO or a device would block a reader or
-// never end.
-void requireRegularFile(const std::string& path) {
+// never end (InputError from darkroom::requireRegularFile).
+void requireImageFile(const std::string& path) {
     std::error_code ec;
-    const fs::file_status st = fs::status(path, ec);
-    if (!fs::exists(st)) throw Error("cannot read image '" + path + "': no such file");
-    if (fs::is_directory(st)) throw Error("cannot read image '" + path + "': it is a directory");
-    if (!fs::is_regular_file(st)) throw Error("cannot read image '" + path + "': not a regular file");
+    if (!fs::exists(fs::status(path, ec))) throw InputError("cannot read image '" + path + "': no such file");
+    requireRegularFile(path, "image");
 }
 
 bool hasExrExtension(const std::string& path) {
@@ -37,7 +36,7 @@ bool hasExrExtension(const std::string& path) {
 }  // namespace
 
 std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
-    requireRegularFile(path);
+    requireImageFile(path);
     if (io::isExrFile(path)) return io::readExr(path);
     return io::oiioModule("reading '" + path + "'").readImage(path);
 }
@@ -56,7 +55,7 @@ void writeImage(const Buffer& image, const std::string& path, const ImageWriteOp
 namespace io {
 
 ImageHeader readImageHeader(const std::string& path) {
-    requireRegularFile(path);
+    requireImageFile(path);
     if (isExrFile(path)) return readExrHeader(path);
     return oiioModule("reading the header of '" + path + "'").readHeader(path);
 }

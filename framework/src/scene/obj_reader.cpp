@@ -31,7 +31,7 @@ std::string vertexIndex(std::string_view ref, std::size_t defined, std::uint32_t
 }  // namespace
 
 std::vector<SceneObject> readObj(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "mesh");
     mesh::TextCursor cur(path, data);
     mesh::PolyMesh m;
     m.source = path;
@@ -64,6 +64,9 @@ std::vector<SceneObject> readObj(const std::string& path) {
         // vt, vn, vp, o, g, s, usemtl, mtllib: not needed for capture.
     }
     m.cellCount = cell;
+    // Faces cannot exist without vertices, so this is the empty file too.
+    if (m.points.empty())
+        throw InputError(path + ": no vertices ('v x y z' lines); expected an OBJ mesh with at least one vertex");
     // OBJ's VTK-style order (vertices, lines, polygons) does not matter: no cell data.
     return mesh::buildSceneObjects(m, std::filesystem::path(path).stem().string());
 }

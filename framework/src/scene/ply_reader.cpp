@@ -6,7 +6,9 @@
 #include "text_cursor.h"
 
 #include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/limits.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -28,6 +30,7 @@ struct Element {
     std::string name;
     std::size_t count = 0;
     std::vector<Property> properties;
+    int line = 0;  // of its 'element' line, for messages
 };
 
 std::optional<ValueType> plyType(std::string_view s) {
@@ -49,12 +52,17 @@ public:
     mesh::PolyMesh read() {
         readHeader();
         mesh_.source = path_;
+        checkElements();
+        // An element without properties has nothing to read: it is skipped
+        // whole, so its count allocates nothing.
         for (const auto& e : elements_)
-            if (e.name == "face") faceCount_ = e.count;
+            if (e.properties.empty()) continue;
+            else if (e.name == "face") faceCount_ = e.count;
             else if (e.name == "tristrips") stripCount_ = e.count;
             else if (e.name == "vertex") vertexCount_ = e.count;
         mesh_.cellCount = faceCount_ + stripCount_;
-        for (const auto& e : elements_) readElement(e);
+        for (const auto& e : elements_)
+            if (!e.properties.empty()) readElement(e);
         return std::move(mesh_);
     }
 
@@ -73,7 +81,7 @@ private:
             const int line = cur_.line();
             const auto t = mesh::splitBlanks(cur_.restOfLine());
             auto bad = [&](const std::string& what) {
-                throw Error(path_ + ":" + std::to_string(line) + ": " + what);
+                throw InputError(path_ + ":" + std::to_string(line) + ": " + what);
             };
             if (t.empty()) continue;
             if (t[0] == "comment" || t[0] == "obj_info") continue;
@@ -89,7 +97,11 @@ private:
                 long long n = 0;
                 if (t.size() != 3 || !mesh::parseInteger(t[2], n) || n < 0)
                     bad("expected 'element <name> <count>'");
-                elements_.push_back({std::string(t[1]), std::size_t(n), {}});
+                for (const auto& e : elements_)
+                    if (e.name == t[1] && (e.name == "vertex" || e.name == "face" || e.name == "tristrips"))
+                        bad("a second 'element " + e.name + "' (the first is on line " + std::to_string(e.line) +
+                            "); expected one");
+                elements_.push_back({std::string(t[1]), std::size_t(n), {}, line});
             } else if (t[0] == "property") {
                 if (elements_.empty()) bad("'property' before any 'element'");
                 Property p;
@@ -134,18 +146,43 @@ private:
         return int(mesh_.cellData.size() - 1);
     }
 
+    // Checked once the header is read, before anything is allocated: the
+    // vertices have x, y and z, and every count fits in the rest of the file.
+    void checkElements() {
+        const Element* vertex = nullptr;
+        for (const auto& e : elements_) {
+            checkCount(e);
+            if (e.name == "vertex") vertex = &e;
+        }
+        if (!vertex) throw InputError(path_ + ": no 'element vertex' in the PLY header; expected vertices with x, y, z");
+        for (const char* axis : {"x", "y", "z"}) {
+            bool found = false;
+            for (const auto& p : vertex->properties) found |= !p.isList && p.name == axis;
+            if (!found)
+                throw InputError(path_ + ":" + std::to_string(vertex->line) + ": 'element vertex' has no scalar property '" +
+                                 axis + "'; expected x, y and z");
+        }
+        // Points and fields are float32: 4 bytes per scalar property.
+        checkBytes(Limit::DecodedBytes, std::uint64_t(vertex->count) * 4 * std::max<std::size_t>(vertex->properties.size(), 3),
+                   path_, "'element vertex' of " + std::to_string(vertex->count) + " vertices");
+    }
+
     // Refuses counts the rest of the file cannot hold before allocating for them:
-    // each instance takes at least its fixed-size bytes (binary) or 2 characters per property (ASCII).
+    // each instance takes at least its fixed-size bytes (binary) or 2 characters per property,
+    // and at least one (a line end) in all (ASCII).
     void checkCount(const Element& e) {
         std::size_t least = 0;
         for (const auto& p : e.properties) least += ascii_ ? 2 : mesh::sizeOf(p.isList ? p.countType : p.type);
+        if (ascii_) least = std::max<std::size_t>(least, 1);
         if (least > 0 && e.count > cur_.remaining() / least)
-            throw Error(path_ + ": element '" + e.name + "' declares " + std::to_string(e.count) +
-                        " entries but the file is too short to hold them (truncated?)");
+            throw InputError(path_ + ":" + std::to_string(e.line) + ": element '" + e.name + "' declares " +
+                             std::to_string(e.count) + " entries but the " + std::to_string(cur_.remaining()) +
+                             " bytes after the header hold at most " + std::to_string(cur_.remaining() / least) +
+                             " (truncated?)");
     }
 
     void readElement(const Element& e) {
-        checkCount(e);
+        checkCount(e);  // again: earlier elements took their share of the file
         const bool isVertex = e.name == "vertex", isFace = e.name == "face", isStrip = e.name == "tristrips";
         // Where each scalar property goes: x/y/z, a field, or nowhere.
         std::vector<int> fieldIndex(e.properties.size(), -1);
@@ -214,7 +251,7 @@ private:
 }  // namespace
 
 std::vector<SceneObject> readPly(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "mesh");
     PlyReader reader(path, data);
     return mesh::buildSceneObjects(reader.read(), std::filesystem::path(path).stem().string());
 }

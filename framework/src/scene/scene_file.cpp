@@ -1,13 +1,15 @@
 // The capture scene file: YAML in, SceneDescription out. Every problem is a
-// darkroom::Error at "scene.yaml:line:column" (1-based); reader and generator
-// errors are prefixed with the object that asked for them.
+// darkroom::InputError at "scene.yaml:line:column" (1-based); reader and
+// generator errors are prefixed with the object that asked for them.
 #include "object_style.h"
 #include "partition/agreement.h"
 #include "partition/parallel_vtk.h"
 #include "partition/split_objects.h"
 #include "text_cursor.h"
+#include "../core/yaml_guard.h"
 
 #include <darkroom/error.h>
+#include <darkroom/input_file.h>
 #include <darkroom/framework/scene/generators.h>
 #include <darkroom/framework/scene/mesh_readers.h>
 #include <darkroom/framework/scene/scene_file.h>
@@ -18,6 +20,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -63,7 +67,9 @@ private:
         if (m.line < 0) return source_;
         return source_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
     }
-    [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const { throw Error(where(n) + ": " + what); }
+    [[noreturn]] void fail(const YAML::Node& n, const std::string& what) const {
+        throw InputError(where(n) + ": " + what);
+    }
 
     void checkKeys(const YAML::Node& map, std::initializer_list<const char*> allowed, const std::string& what) const {
         for (const auto& kv : map) {
@@ -71,7 +77,10 @@ private:
             if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
                 std::string list;
                 for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-                fail(kv.first, "unknown key '" + key + "' in " + what + " (expected " + list + ")");
+                const std::string near = yamlguard::nearestKey(key, std::vector<std::string>(allowed.begin(), allowed.end()));
+                fail(kv.first, "unknown key '" + key + "' in " + what +
+                                   (near.empty() ? std::string() : "; did you mean '" + near + "'?") + " (expected " +
+                                   list + ")");
             }
         }
     }
@@ -383,7 +392,9 @@ private:
             }
             if (const YAML::Node f = n["fov"]) {
                 proto.fovYDegrees = number(f, "fov");
-                if (!(proto.fovYDegrees > 0 && proto.fovYDegrees < 180)) fail(f, "fov must be in (0, 180) degrees");
+                if (!(proto.fovYDegrees >= kMinFov && proto.fovYDegrees <= kMaxFov))
+                    fail(f, "fov must lie in [" + shortNumber(kMinFov) + ", " + shortNumber(kMaxFov) + "] degrees, got " +
+                                shortNumber(proto.fovYDegrees));
             }
             if (const YAML::Node r = n["resolution"]) {
                 if (!r.IsSequence() || r.size() != 2) fail(r, "resolution must be [width, height]");
@@ -395,9 +406,13 @@ private:
             if (const YAML::Node h = n["height"]) {
                 proto.viewHeight = number(h, "height");
                 if (!(proto.viewHeight > 0)) fail(h, "height must be positive (world units)");
+                if (proto.viewHeight > kReach * radius || proto.viewHeight < radius / kReach)
+                    fail(h, "height " + shortNumber(proto.viewHeight) + " is out of proportion to the scene: it must lie "
+                                "between " + shortNumber(1 / kReach) + " and " + shortNumber(kReach) +
+                                " times the scene's radius (" + shortNumber(radius) + ")");
             }
             if (n["grid"] && n["list"]) fail(n, "give either 'grid' or 'list' cameras, not both");
-            if (n["list"]) return cameraList(n["list"], proto, center);
+            if (n["list"]) return cameraList(n["list"], proto, center, radius);
         } else {
             proto.viewHeight = 2.0 * radius;
         }
@@ -417,14 +432,15 @@ private:
             checkKeys(g, {"phi", "theta", "distance", "up", "target"}, "grid");
             if (g["phi"]) phis = angles(g["phi"], "phi", -360, 360, true);
             if (g["theta"]) thetas = angles(g["theta"], "theta", -90, 90, false);
-            if (g["up"]) {
-                up = vec3(g["up"], "up");
-                if (length(up) == 0) fail(g["up"], "up must not be zero");
-            }
-            if (g["target"]) target = vec3(g["target"], "target");
+            if (g["up"]) up = direction(g["up"], "up");
+            if (g["target"]) target = within(g["target"], vec3(g["target"], "target"), "target", target, radius);
             if (g["distance"]) {
                 distance = number(g["distance"], "distance");
                 if (!(distance > 0)) fail(g["distance"], "distance must be positive");
+                if (distance > kReach * radius)
+                    fail(g["distance"], "distance " + shortNumber(distance) + " is too far: cameras must lie within " +
+                                            shortNumber(kReach) + " scene radii (radius " + shortNumber(radius) +
+                                            ") of the scene");
             }
         }
         std::vector<CameraSample> out;
@@ -434,7 +450,8 @@ private:
         return out;
     }
 
-    std::vector<CameraSample> cameraList(const YAML::Node& l, const Camera& proto, const Vec3& center) const {
+    std::vector<CameraSample> cameraList(const YAML::Node& l, const Camera& proto, const Vec3& center,
+                                         double radius) const {
         if (!l.IsSequence() || l.size() == 0) fail(l, "'list' must be a non-empty list of {position, target or forward, up}");
         std::vector<CameraSample> out;
         for (std::size_t i = 0; i < l.size(); ++i) {
@@ -444,17 +461,53 @@ private:
             if (!c["position"]) fail(c, "camera " + std::to_string(i) + " needs a 'position'");
             if (c["target"] && c["forward"]) fail(c, "give either 'target' or 'forward', not both");
             Camera cam = proto;
-            cam.position = vec3(c["position"], "position");
-            const Vec3 target = c["target"] ? vec3(c["target"], "target") : center;
-            cam.forward = c["forward"] ? vec3(c["forward"], "forward") : target - cam.position;
-            if (length(cam.forward) == 0) fail(c, "camera " + std::to_string(i) + " looks nowhere (target equals position or forward is zero)");
-            cam.forward = normalize(cam.forward);
-            if (c["up"]) cam.up = vec3(c["up"], "up");
+            cam.position = within(c["position"], vec3(c["position"], "position"), "position", center, radius);
+            const Vec3 target =
+                c["target"] ? within(c["target"], vec3(c["target"], "target"), "target", center, radius) : center;
+            if (c["forward"]) {
+                cam.forward = direction(c["forward"], "forward");
+            } else {
+                cam.forward = target - cam.position;
+                if (length(cam.forward) == 0)
+                    fail(c, "camera " + std::to_string(i) + " looks nowhere (target equals position)");
+                cam.forward = normalize(cam.forward);
+            }
+            if (c["up"]) cam.up = direction(c["up"], "up");
             if (length(cross(cam.forward, cam.up)) < 1e-9)
                 fail(c["up"] ? c["up"] : c, "camera " + std::to_string(i) + ": up must not be parallel to the view direction");
             out.push_back({{{"camera", double(i)}}, cam});
         }
         return out;
+    }
+
+    // Cameras are ray traced in single precision (Embree). Beyond a million
+    // scene radii a camera sees nothing but rounding, and values far beyond
+    // that overflow a float and abort inside Embree; a field of view near 0
+    // or 180 degrees does the same through tan().
+    static constexpr double kReach = 1e6;
+    static constexpr double kMinFov = 1e-3, kMaxFov = 179.999;
+
+    static std::string shortNumber(double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.6g", v);
+        return buf;
+    }
+    // A point (camera position or target) no further than kReach radii from the scene's centre.
+    Vec3 within(const YAML::Node& n, const Vec3& p, const std::string& what, const Vec3& center, double radius) const {
+        const Vec3 d = p - center;
+        const double far = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        if (!(far <= kReach * radius))
+            fail(n, what + " [" + shortNumber(p.x) + ", " + shortNumber(p.y) + ", " + shortNumber(p.z) +
+                        "] is too far from the scene: cameras must lie within " + shortNumber(kReach) +
+                        " scene radii (radius " + shortNumber(radius) + ") of its centre");
+        return p;
+    }
+    // A unit direction; any non-zero length is accepted (scaled first, so 1e300 does not overflow).
+    Vec3 direction(const YAML::Node& n, const std::string& what) const {
+        const Vec3 v = vec3(n, what);
+        const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+        if (!(m > 0)) fail(n, what + " must not be zero");
+        return normalize(Vec3{v.x / m, v.y / m, v.z / m});
     }
 
     // The whole scene's bounds, also when this process holds only part of it.
@@ -469,33 +522,34 @@ private:
     std::vector<bool> pieceWise_;
 };
 
+[[noreturn]] void yamlError(const std::string& sourceName, const YAML::Exception& e) {
+    throw InputError(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                     ": " + e.msg);
+}
+
+// One document, no repeated keys, aliases within a budget (yaml_guard.h).
 YAML::Node loadYaml(const std::string& yamlText, const std::string& sourceName) {
     try {
-        return YAML::Load(yamlText);
+        return yamlguard::load(yamlText);
     } catch (const YAML::Exception& e) {
-        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+        yamlError(sourceName, e);
     }
 }
 
 }  // namespace
 
 SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir) {
-    YAML::Node root;
-    try {
-        root = YAML::Load(yamlText);
-    } catch (const YAML::Exception& e) {
-        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
-    }
+    const YAML::Node root = loadYaml(yamlText, sourceName);
     try {
         return Parser(sourceName, baseDir).parse(root);
     } catch (const YAML::Exception& e) {
         // A conversion yaml-cpp itself refused (should be rare: values are parsed here).
-        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+        yamlError(sourceName, e);
     }
 }
 
 SceneDescription loadSceneFile(const std::string& path) {
-    const std::string text = mesh::readWholeFile(path);
+    const std::string text = readInputFile(path, "scene file");
     return parseSceneFile(text, path, std::filesystem::path(path).parent_path().string());
 }
 
@@ -510,7 +564,7 @@ PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::stri
     try {
         out.description = parser.parse(root);
     } catch (const YAML::Exception& e) {
-        throw Error(sourceName + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ": " + e.msg);
+        yamlError(sourceName, e);
     }
     std::vector<SceneObject>& objects = out.description.scene->objects;
     const std::size_t n = objects.size();
@@ -542,7 +596,7 @@ PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::stri
 PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group) {
     std::string text, error;
     try {
-        text = mesh::readWholeFile(path);
+        text = readInputFile(path, "scene file");
     } catch (const Error& e) {
         error = e.what();
     }

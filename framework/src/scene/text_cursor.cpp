@@ -1,16 +1,15 @@
 #include "text_cursor.h"
 
-#include <fstream>
-#include <sstream>
+#include <darkroom/input_file.h>
+
+#include <filesystem>
 
 namespace darkroom::mesh {
 
-std::string readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open file for reading");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return std::move(s).str();
+std::string readWholeFile(const std::string& path, const std::string& what) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot open file for reading (no such file)");
+    return readInputFile(path, what);
 }
 
 std::vector<std::string_view> splitBlanks(std::string_view line) {

@@ -12,8 +12,10 @@
 
 namespace darkroom::mesh {
 
-// Reads a whole file; throws darkroom::Error naming it when it cannot be opened.
-std::string readWholeFile(const std::string& path);
+// Reads a whole regular file through darkroom::readInputFile: a FIFO, a device
+// or a directory is refused (InputError naming the path and `what`) instead of
+// blocking or reading without end; a missing file says "cannot open".
+std::string readWholeFile(const std::string& path, const std::string& what = "file");
 
 // Splits on blanks (spaces, tabs, \r).
 std::vector<std::string_view> splitBlanks(std::string_view line);

@@ -6,10 +6,14 @@
 #include "text_cursor.h"
 
 #include <darkroom/error.h>
+#include <darkroom/limits.h>
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <limits>
 
 namespace darkroom::mesh {
 
@@ -55,22 +59,50 @@ std::size_t headerWord(const VtkXmlEncoding& f_, ByteSource& src, const std::str
     return std::size_t(loadValue(f_.headerType, b.data(), f_.bigEndian));
 }
 
+// What a block may declare: the bytes its array needs, and the decoded-bytes limit.
+struct BlockLimit {
+    std::uint64_t maxBytes;    // tuples x components x type size; UINT64_MAX when unknown
+    std::size_t valueSize;     // bytes of one stored value (decoded to an 8-byte double)
+};
+
+void checkDeclared(std::uint64_t bytes, const BlockLimit& lim, const std::string& where, const char* what) {
+    if (bytes > lim.maxBytes)
+        throw InputError(where + what + " declares " + std::to_string(bytes) + " bytes but the array needs at most " +
+                         std::to_string(lim.maxBytes));
+    // Decoded twice over: the raw bytes, then one double per value.
+    const std::uint64_t values = bytes / lim.valueSize;
+    checkBytes(Limit::DecodedBytes, std::max<std::uint64_t>(bytes, values * sizeof(double)),
+               where.substr(0, where.size() - 2), std::string(what) + " decoded");
+}
+
 // The bytes of one binary block: header + data, or header + zlib blocks.
-std::string block(const VtkXmlEncoding& f_, ByteSource& src, const std::string& where) {
+// Every declared size is checked before anything is inflated or allocated.
+std::string block(const VtkXmlEncoding& f_, ByteSource& src, const std::string& where, const BlockLimit& lim) {
     std::string out, err;
     if (!f_.compressed) {
         const std::size_t n = headerWord(f_, src, where);
+        checkDeclared(n, lim, where, "binary data");
         if (!src.read(n, out, err)) throw Error(where + err);
         return out;
     }
     const std::size_t nb = headerWord(f_, src, where), bs = headerWord(f_, src, where), last = headerWord(f_, src, where);
-    std::vector<std::size_t> sizes(nb > (1u << 24) ? 0 : nb);
-    if (sizes.size() != nb) throw Error(where + "implausible zlib block count " + std::to_string(nb));
+    if (nb > (1u << 24)) throw InputError(where + "implausible zlib block count " + std::to_string(nb));
+    // Uncompressed total: nb - 1 full blocks and the last (bs when `last` is 0).
+    std::uint64_t total = 0;
+    if (nb > 0) {
+        const std::uint64_t lastSize = last != 0 ? last : bs;
+        if (bs != 0 && std::uint64_t(nb - 1) > (std::numeric_limits<std::uint64_t>::max() - lastSize) / bs)
+            throw InputError(where + "zlib header declares an impossible uncompressed size");
+        total = std::uint64_t(nb - 1) * bs + lastSize;
+    }
+    checkDeclared(total, lim, where, "zlib data");
+    std::vector<std::size_t> sizes(nb);
     for (auto& s : sizes) s = headerWord(f_, src, where);
+    out.reserve(std::size_t(total));
     for (std::size_t i = 0; i < nb; ++i) {
         const std::size_t raw = (i + 1 == nb && last != 0) ? last : bs;
         // Deflate expands at most ~1032:1; anything more is a corrupt header.
-        if (raw > sizes[i] * 1032 + 64) throw Error(where + "zlib block " + std::to_string(i) + " claims an impossible size");
+        if (raw / 1032 > sizes[i] + 1) throw Error(where + "zlib block " + std::to_string(i) + " claims an impossible size");
         std::string comp;
         if (!src.read(sizes[i], comp, err)) throw Error(where + err);
         const std::size_t at = out.size();
@@ -87,7 +119,7 @@ std::string block(const VtkXmlEncoding& f_, ByteSource& src, const std::string& 
 
 }  // namespace
 
-VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& f_) {
+VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& f_, std::size_t maxTuples) {
     VtkArray a;
     a.name = e.attributeOr("Name", "");
     const std::string where = f_.path + ":" + std::to_string(e.line) + ": DataArray '" + a.name + "': ";
@@ -97,6 +129,12 @@ VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& f_) {
     a.components = e.attribute("NumberOfComponents") ? int(vtkCountAttribute(e, f_.path, "NumberOfComponents")) : 1;
     if (a.components < 1) throw Error(where + "NumberOfComponents must be at least 1");
     const std::string format = e.attributeOr("format", "ascii");
+    BlockLimit lim{std::numeric_limits<std::uint64_t>::max(), sizeOf(*type)};
+    if (maxTuples != kAnyTuples) {
+        // tuples x components x type size, saturating.
+        const std::uint64_t perTuple = std::uint64_t(a.components) * sizeOf(*type);
+        if (maxTuples <= std::numeric_limits<std::uint64_t>::max() / perTuple) lim.maxBytes = maxTuples * perTuple;
+    }
     if (format == "ascii") {
         const std::string_view text = e.text;
         std::size_t i = 0;
@@ -115,7 +153,7 @@ VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& f_) {
     std::string bytes;
     if (format == "binary") {
         Base64Source src(e.text);
-        bytes = block(f_, src, where);
+        bytes = block(f_, src, where, lim);
     } else if (format == "appended") {
         if (!f_.doc->appendedElement) throw Error(where + "format is appended but the file has no <AppendedData>");
         const std::size_t offset = vtkCountAttribute(e, f_.path, "offset");
@@ -123,10 +161,10 @@ VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& f_) {
         const std::string_view rest = f_.doc->appended.substr(offset);
         if (f_.appendedBase64) {
             Base64Source src(rest);
-            bytes = block(f_, src, where);
+            bytes = block(f_, src, where, lim);
         } else {
             RawSource src(rest);
-            bytes = block(f_, src, where);
+            bytes = block(f_, src, where, lim);
         }
     } else {
         throw Error(where + "unknown format '" + format + "' (expected ascii, binary or appended)");

@@ -31,7 +31,11 @@ struct VtkArray {
 VtkXmlEncoding vtkXmlEncoding(const VtkXmlDocument& doc, const std::string& path);
 
 // Decodes one <DataArray>; throws darkroom::Error naming path:line and the array.
-VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& encoding);
+// Binary data whose declared (uncompressed) size exceeds maxTuples x
+// NumberOfComponents values, or limit(Limit::DecodedBytes), is refused before
+// anything is inflated or allocated; kAnyTuples when the caller cannot know.
+constexpr std::size_t kAnyTuples = std::size_t(-1);
+VtkArray readVtkDataArray(const XmlElement& e, const VtkXmlEncoding& encoding, std::size_t maxTuples = kAnyTuples);
 
 // A non-negative integer attribute (0 when absent); throws naming path:line.
 std::size_t vtkCountAttribute(const XmlElement& e, const std::string& path, const char* key);

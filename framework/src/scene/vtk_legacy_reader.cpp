@@ -276,7 +276,7 @@ private:
 }  // namespace
 
 std::vector<SceneObject> readVtkLegacy(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "mesh");
     LegacyReader reader(path, data);
     return mesh::buildSceneObjects(reader.read(), std::filesystem::path(path).stem().string());
 }

@@ -60,13 +60,15 @@ private:
 
     std::size_t countAttr(const XmlElement& e, const char* key) const { return mesh::vtkCountAttribute(e, f_.path, key); }
 
-    Array dataArray(const XmlElement& e) const { return mesh::readVtkDataArray(e, f_); }
+    Array dataArray(const XmlElement& e, std::size_t maxTuples = mesh::kAnyTuples) const {
+        return mesh::readVtkDataArray(e, f_, maxTuples);
+    }
 
     // The DataArray named `name` inside `parent` (or the first one when name is empty).
     Array required(const XmlElement& parent, const std::string& name, std::size_t expected, int components) const {
         for (const auto& c : parent.children) {
             if (c->name != "DataArray" || (!name.empty() && c->attributeOr("Name", "") != name)) continue;
-            Array a = dataArray(*c);
+            Array a = dataArray(*c, expected);
             if (a.values.size() != expected * std::size_t(components))
                 fail(*c, "DataArray '" + a.name + "' has " + std::to_string(a.values.size()) + " values, expected " +
                              std::to_string(expected) + " x " + std::to_string(components));
@@ -83,7 +85,7 @@ private:
         std::size_t k = 0;
         for (const auto& c : parent->children) {
             if (c->name != "DataArray") continue;
-            const Array a = dataArray(*c);
+            const Array a = dataArray(*c, tuples);
             if (a.values.size() != tuples * std::size_t(a.components))
                 fail(*c, "DataArray '" + a.name + "' has " + std::to_string(a.values.size()) + " values, expected " +
                              std::to_string(tuples) + " x " + std::to_string(a.components));
@@ -128,7 +130,7 @@ private:
         const XmlElement* e = piece.child(tag);
         if (!e) fail(piece, std::string("missing <") + tag + "> for " + std::to_string(n) + " cells");
         const Array conn = named(*e, "connectivity");
-        const Array off = named(*e, "offsets");
+        const Array off = named(*e, "offsets", n + 1);
         const auto bounds = cellBounds(off, n, conn.values.size(), *e);
         for (std::size_t c = 0; c < n; ++c) {
             for (std::size_t k = bounds[c]; k < bounds[c + 1]; ++k) list.connectivity.push_back(pointIndex(conn.values[k], pointBase, np, *e));
@@ -136,10 +138,10 @@ private:
         }
     }
 
-    // A DataArray whose length the piece does not state (connectivity, offsets).
-    Array named(const XmlElement& parent, const std::string& name) const {
+    // A DataArray whose length the piece does not state exactly (connectivity, offsets).
+    Array named(const XmlElement& parent, const std::string& name, std::size_t maxTuples = mesh::kAnyTuples) const {
         for (const auto& c : parent.children)
-            if (c->name == "DataArray" && c->attributeOr("Name", "") == name) return dataArray(*c);
+            if (c->name == "DataArray" && c->attributeOr("Name", "") == name) return dataArray(*c, maxTuples);
         fail(parent, "<" + parent.name + "> lacks the DataArray '" + name + "'");
     }
 
@@ -176,7 +178,7 @@ private:
         const XmlElement* e = piece.child("Cells");
         if (!e) fail(piece, "missing <Cells>");
         const Array conn = named(*e, "connectivity");
-        const Array off = named(*e, "offsets");
+        const Array off = named(*e, "offsets", n + 1);
         const Array types = required(*e, "types", n, 1);
         const auto bounds = cellBounds(off, n, conn.values.size(), *e);
         for (std::size_t c = 0; c < n; ++c) {
@@ -210,7 +212,7 @@ private:
 }  // namespace
 
 std::vector<SceneObject> readVtkXml(const std::string& path, std::vector<std::string>* warnings) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "mesh");
     XmlReader reader(path, warnings);
     return mesh::buildSceneObjects(reader.read(data), std::filesystem::path(path).stem().string());
 }

@@ -4,18 +4,36 @@
 
 #include <expat.h>
 
+#include <limits>
+
 namespace darkroom::mesh {
 namespace {
+
+// VTK files nest six or seven elements deep. The tree and every walk over it
+// (findAppended, the destructors of XmlElement) recurse once per level, so a
+// forged file of a few hundred thousand nested elements would overflow the
+// stack: nesting beyond this is refused while parsing.
+constexpr std::size_t kMaxDepth = 256;
 
 struct Builder {
     XML_Parser parser = nullptr;
     std::unique_ptr<XmlElement> root;
     std::vector<XmlElement*> stack;
     bool multipleRoots = false;
+    std::string tooDeep;  // the error, once nesting went beyond kMaxDepth
 };
 
 void XMLCALL onStart(void* user, const XML_Char* name, const XML_Char** atts) {
     auto* b = static_cast<Builder*>(user);
+    if (b->stack.size() >= kMaxDepth) {
+        if (b->tooDeep.empty())
+            b->tooDeep = ":" + std::to_string(XML_GetCurrentLineNumber(b->parser)) + ": <" + std::string(name) +
+                         "> at byte offset " + std::to_string(XML_GetCurrentByteIndex(b->parser)) +
+                         " is nested " + std::to_string(b->stack.size() + 1) + " elements deep; expected at most " +
+                         std::to_string(kMaxDepth) + " (a VTK file nests about 7)";
+        XML_StopParser(b->parser, XML_FALSE);
+        return;
+    }
     auto e = std::make_unique<XmlElement>();
     e->name = name;
     e->line = int(XML_GetCurrentLineNumber(b->parser));
@@ -65,6 +83,9 @@ VtkXmlDocument parseVtkXml(std::string_view data, const std::string& source) {
         appended = data.substr(mark + 1);
         final = false;
     }
+    if (markup.size() > std::size_t(std::numeric_limits<int>::max()))
+        throw InputError(source + ": " + std::to_string(markup.size()) +
+                         " bytes of XML markup; expected at most 2 GiB (put large arrays in <AppendedData>)");
     Builder b;
     b.parser = XML_ParserCreate(nullptr);
     if (!b.parser) throw Error(source + ": cannot create an XML parser");
@@ -72,6 +93,10 @@ VtkXmlDocument parseVtkXml(std::string_view data, const std::string& source) {
     XML_SetElementHandler(b.parser, onStart, onEnd);
     XML_SetCharacterDataHandler(b.parser, onText);
     const auto status = XML_Parse(b.parser, markup.data(), int(markup.size()), final ? 1 : 0);
+    if (!b.tooDeep.empty()) {
+        XML_ParserFree(b.parser);
+        throw InputError(source + b.tooDeep);
+    }
     if (status != XML_STATUS_OK) {
         const std::string msg = source + ":" + std::to_string(XML_GetCurrentLineNumber(b.parser)) + ":" +
                                 std::to_string(XML_GetCurrentColumnNumber(b.parser) + 1) +

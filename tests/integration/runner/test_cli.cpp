@@ -127,10 +127,12 @@ TEST(RunnerCli, BadInputsExit2) {
     EXPECT_NE(v.err.find(":4:11: error: unknown node type 'Mystery'"), std::string::npos) << v.err;
 }
 
-TEST(RunnerCli, RuntimeFailureExit1NamesTheNode) {
+// A missing input file is bad input, found while running: exit 2 as for a
+// bad pipeline (issue 18), naming the node and the file.
+TEST(RunnerCli, MissingInputFileExit2NamesTheNode) {
     ColourMapCase c;
     const auto r = runDarkroom({"run", c.dir.file("p.yaml"), "--set", "read.path=nothing-here.exr"});
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("node 'read' (ImageReader)"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("nothing-here.exr"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line per error: " << r.err;

@@ -208,5 +208,5 @@ TEST(SceneFile, LoadResolvesFilesNextToTheSceneFile) {
     EXPECT_EQ(d.path, dir.file("scene.yaml"));
     EXPECT_EQ(d.cameras.size(), 2u);
     EXPECT_TRUE(d.request.scalars.empty());
-    expectError([&] { loadSceneFile(dir.file("none.yaml")); }, {dir.file("none.yaml"), "cannot open"});
+    expectError([&] { loadSceneFile(dir.file("none.yaml")); }, {dir.file("none.yaml"), "cannot read scene file"});
 }

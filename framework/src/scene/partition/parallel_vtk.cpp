@@ -44,7 +44,7 @@ bool isParallelVtk(const std::string& path) {
 }
 
 std::vector<std::string> parallelVtkPieces(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path);
+    const std::string data = mesh::readWholeFile(path, "mesh");
     const mesh::VtkXmlDocument doc = mesh::parseVtkXml(data, path);
     const mesh::XmlElement& root = *doc.root;
     auto fail = [&](const mesh::XmlElement& e, const std::string& what) -> void {

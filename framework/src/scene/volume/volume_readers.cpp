@@ -30,7 +30,7 @@ public:
     VolumeReader(const std::string& path, std::vector<std::string>* warnings) : path_(path), warnings_(warnings) {}
 
     VolumeMesh read() {
-        data_ = mesh::readWholeFile(path_);
+        data_ = mesh::readWholeFile(path_, "volume");
         doc_ = mesh::parseVtkXml(data_, path_);
         const XmlElement& root = *doc_.root;
         if (root.name != "VTKFile") fail(root, "expected <VTKFile> as the root element, got <" + root.name + ">");

@@ -31,11 +31,13 @@ struct NpyHeader {
     std::vector<std::size_t> shape;
     bool fortranOrder = false;
     std::size_t dataOffset = 0;  // bytes before the first value
+    std::size_t dataBytes = 0;   // bytes of the values: product(shape) x dtype size
 };
 
 // Parses the magic, version (1, 2 or 3) and header dict of .npy bytes. `where`
 // names the file (and member) in messages: "x.npz:data.npy". Throws
-// darkroom::Error for a bad magic, version, header or an unsupported dtype.
+// darkroom::Error for a bad magic, version, header or an unsupported dtype, and
+// InputError for a shape whose size overflows.
 DARKROOM_API NpyHeader parseNpyHeader(std::string_view bytes, const std::string& where);
 // Parses a whole .npy image; throws darkroom::Error naming `where` when the
 // data is shorter than the header's shape requires.
@@ -43,7 +45,9 @@ DARKROOM_API NpyArray parseNpy(std::string_view bytes, const std::string& where)
 
 // Reads every .npy member of an .npz archive (stored or deflated), in archive
 // order. Throws darkroom::Error naming the file (and member) when the archive
-// or a member is malformed.
+// or a member is malformed; InputError before reading a member whose size in
+// the zip directory differs from what its header's shape needs, or exceeds
+// limit(Limit::DecodedBytes).
 DARKROOM_API std::vector<NpyArray> readNpz(const std::string& path);
 // Only the headers (name, dtype, shape) of each member, without converting data.
 DARKROOM_API std::vector<NpyArray> readNpzHeaders(const std::string& path);
