@@ -8,6 +8,7 @@
 # the inputs it grew go OUTSIDE the repository, to
 # ${DARKROOM_FUZZ_OUT:-$HOME/.cache/darkroom-fuzz}/<harness>/; a summary line
 # per harness (executions, exec/s, seconds, findings) is appended to summary.txt there.
+# DARKROOM_FUZZ_SECONDS, when set, also bounds each harness's run in time.
 # Stops a harness at its first finding; reproduce one with
 #   <build>/fuzz/fuzz_<harness> <finding file>
 set -euo pipefail
@@ -43,7 +44,7 @@ for h in $harnesses; do
   echo "fuzz.sh: $h to $runs executions; log $log" >&2
   start=$(date +%s)
   rc=0
-  nice "$build/fuzz_$h" -runs="$runs" -timeout=25 -print_final_stats=1 \
+  nice "$build/fuzz_$h" -runs="$runs" -max_total_time="${DARKROOM_FUZZ_SECONDS:-0}" -timeout=25 -print_final_stats=1 \
     -artifact_prefix="$dir/" "${corpora[@]}" >"$log" 2>&1 || rc=$?
   seconds=$(( $(date +%s) - start ))
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

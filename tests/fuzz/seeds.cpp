@@ -67,6 +67,15 @@ int main(int argc, char** argv) {
             writeBytes(root / "image" / ext, std::string(1, index) + bytes);
             fs::remove(tmp);
         }
+        // Found by the image harness: a tEXt chunk declaring 1.9 GB in a
+        // 200-byte PNG (framework/oiio/png_chunks.h); kept as a seed.
+        {
+            std::ifstream in(root / "image" / "png", std::ios::binary);
+            std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const std::string lying("\x73\x6d\x65\x74tEXtComment\0", 16);
+            png.insert(1 + 8 + 25, lying);  // after the selector byte, signature and IHDR
+            writeBytes(root / "image" / "png-lying-text-chunk", png);
+        }
         // NPY: C and Fortran order; NPZ: stored and deflated.
         NpyArray a{"data", "<f4", {2, 3}, false, {1, 2, 3, 4, 5, 6}};
         writeBytes(root / "npy" / "c-order.npy", encodeNpy(a));
