@@ -49,7 +49,7 @@ for h in $harnesses; do
   seconds=$(( $(date +%s) - start ))
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  finding=$(sed -n 's/^Test unit written to //p' "$log" | tail -1)
+  finding=$(sed -n 's/.*Test unit written to //p' "$log" | tail -1)
   line="$(date -u +%FT%TZ) $h executions=${execs:-?} exec/s=${rate:-?} seconds=$seconds rc=$rc finding=${finding:-none}"
   echo "$line" | tee -a "$out/summary.txt"
   [ "$rc" -eq 0 ] || status=1

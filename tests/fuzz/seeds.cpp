@@ -55,6 +55,14 @@ int main(int argc, char** argv) {
             o.compression = compression;
             io::writeExr(*gbuffer, (root / "exr" / (std::string(compression) + ".exr")).string(), o);
         }
+        // Found by the EXR harness: a string attribute declaring 1.9 GB
+        // (framework/src/io/exr_attributes.h); kept as a seed.
+        {
+            std::ifstream in(root / "exr" / "none.exr", std::ios::binary);
+            std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            exr.insert(8, std::string("comments\0string\0\x8d\x5c\x63\x72" "abc", 23));
+            writeBytes(root / "exr" / "lying-attribute", exr);
+        }
         // Other formats through the OpenImageIO module. The harness takes the
         // first byte as the extension's index (see harnesses/image.cpp).
         const auto rgba = image(5, 4, {"R", "G", "B", "A"});

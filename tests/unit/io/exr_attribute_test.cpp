@@ -1,0 +1,63 @@
+// An OpenEXR header attribute that declares more bytes than the file holds is
+// refused before OpenEXR allocates it. Found by the EXR fuzz harness
+// (tests/fuzz): a string attribute declaring 1,919,120,141 bytes in a small
+// file made OpenEXR allocate 1.9 GB while reading the header.
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/image_io.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+
+namespace {
+
+void putLE32(std::string& s, std::uint32_t v) {
+    for (int b = 0; b < 4; ++b) s += char((v >> (8 * b)) & 0xff);
+}
+
+// Magic, version 2 with `flags`, then one attribute.
+std::string exrWithAttribute(std::uint32_t declared, unsigned flags = 0) {
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u | flags);
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, declared);
+    exr += "abc";
+    return exr;
+}
+
+std::string inputErrorOf(const std::string& path) {
+    try {
+        readImage(path);
+    } catch (const InputError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not an InputError: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "no error";
+    return {};
+}
+
+}  // namespace
+
+TEST(ExrAttributes, AttributeLongerThanTheFileIsRefusedBeforeOpenExr) {
+    test::TempDir dir;
+    const std::string path = dir.file("lying-attribute.exr");
+    test::writeText(path, exrWithAttribute(1919120141u));
+    EXPECT_THAT(inputErrorOf(path),
+                HasSubstr(path + ": OpenEXR attribute 'comments' (string) at byte 8 declares 1919120141 bytes"));
+}
+
+TEST(ExrAttributes, NegativeSizeInAMultiPartHeaderIsRefused) {
+    test::TempDir dir;
+    const std::string path = dir.file("negative.exr");
+    test::writeText(path, exrWithAttribute(0xffffff00u, 0x1000));  // multi-part flag
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("declares -256 bytes"));
+}
