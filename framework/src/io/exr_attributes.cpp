@@ -52,6 +52,14 @@ void checkExrAttributeSizes(const std::string& path) {
         if (!readName(in, maxName, type) || !in.read(reinterpret_cast<char*>(bytes), 4)) return;
         const std::int32_t length = std::int32_t(std::uint32_t(bytes[0]) | (std::uint32_t(bytes[1]) << 8) |
                                                  (std::uint32_t(bytes[2]) << 16) | (std::uint32_t(bytes[3]) << 24));
+        if (type == "chlist") {
+            // OpenEXR reads a channel list up to its empty name, whatever the
+            // declared size: follow it the same way (name, then 16 bytes).
+            std::string channel;
+            while (readName(in, maxName, channel) && !channel.empty()) in.seekg(16, std::ios::cur);
+            if (!in) return;
+            continue;
+        }
         const std::int64_t left = size - std::int64_t(in.tellg());
         if (length < 0 || length > left)
             throw InputError(path + ": OpenEXR attribute '" + name + "' (" + type + ") at byte " + std::to_string(at) +

@@ -10,7 +10,10 @@ namespace darkroom::io {
 // Throws InputError naming the file, the attribute and its byte offset when
 // an attribute of an OpenEXR header (every part's, for multi-part files)
 // declares a negative size or more bytes than the file has left. A header
-// this walk cannot follow is left to OpenEXR to report.
+// this walk cannot follow is left to OpenEXR to report. The walk follows
+// OpenEXR's own reading where it ignores the declared size (a channel list
+// is read to its end); other fixed-size types whose declared size disagrees
+// with their natural size are not followed (docs/formats.md, Fuzzing: open).
 void checkExrAttributeSizes(const std::string& path);
 
 }  // namespace darkroom::io

@@ -61,3 +61,22 @@ TEST(ExrAttributes, NegativeSizeInAMultiPartHeaderIsRefused) {
     test::writeText(path, exrWithAttribute(0xffffff00u, 0x1000));  // multi-part flag
     EXPECT_THAT(inputErrorOf(path), HasSubstr("declares -256 bytes"));
 }
+
+// OpenEXR reads a channel list to its empty name whatever size it declares;
+// the check follows it there, so the attribute after it is the one OpenEXR
+// reads next (the fuzzer's second finding: a channel list declaring fewer
+// bytes than it holds hid the 2 GB string attribute behind it).
+TEST(ExrAttributes, AttributeAfterAChannelListOfTheWrongSizeIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("after-chlist.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string("channels\0chlist\0", 16);
+    putLE32(exr, 2);  // wrong: the list below is 19 bytes
+    exr += std::string("R\0", 2) + std::string(16, '\1') + std::string(1, '\0');
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, 2003763213u);
+    exr += "abc";
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 47 declares 2003763213"));
+}
