@@ -32,8 +32,9 @@ void checkExrAttributeSizes(const std::string& path) {
     unsigned char head[8];
     if (!in.read(reinterpret_cast<char*>(head), 8)) return;
     if (head[0] != 0x76 || head[1] != 0x2f || head[2] != 0x31 || head[3] != 0x01) return;
-    // Version flags (byte 5): 0x04 long names (255 characters, else 31), 0x10 multi-part.
-    const std::size_t maxName = (head[5] & 0x04) ? 255 : 31;
+    // OpenEXR reads names of up to 255 characters whatever the long-names
+    // flag says. Version flag 0x10 (byte 5): multi-part.
+    const std::size_t maxName = 255;
     const bool multiPart = (head[5] & 0x10) != 0;
     bool headerHasAttributes = false;
     std::string name, type;

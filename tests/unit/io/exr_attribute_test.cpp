@@ -80,3 +80,20 @@ TEST(ExrAttributes, AttributeAfterAChannelListOfTheWrongSizeIsChecked) {
     test::writeText(path, exr);
     EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 47 declares 2003763213"));
 }
+
+// OpenEXR reads attribute names of up to 255 characters even without the
+// long-names flag; so does the check (the fuzzer's third finding: a 66-character
+// name stopped the check, and OpenEXR went on to a 2 GB string attribute).
+TEST(ExrAttributes, AttributeAfterALongNameIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("long-name.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string(66, 'n') + std::string("\0int\0", 5);
+    putLE32(exr, 4);
+    exr += std::string(4, '\0');
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, 1996488717u);
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 87 declares 1996488717"));
+}
