@@ -29,6 +29,10 @@ packages=(
   libhwy-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)
   abigail-tools
+  # the readers' fuzz harnesses (tests/fuzz, ctest -L fuzz, scripts/fuzz.sh):
+  # clang with AddressSanitizer/UBSan, and libFuzzer, which Debian 12 ships
+  # apart from clang in libclang-rt-14-dev
+  clang libclang-rt-14-dev
   "$@"
 )
 

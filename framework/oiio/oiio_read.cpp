@@ -2,6 +2,7 @@
 // header alone. Part of the OpenImageIO module (module.h).
 #include "module.h"
 #include "oiio_metadata.h"
+#include "png_chunks.h"
 
 #include "../src/io/oiio_message.h"
 
@@ -71,6 +72,7 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) fail(path, "no such file");
     requireRegularFile(path, "image");  // a FIFO or a device would block OpenImageIO
+    checkPngChunks(path);
 
     // Straight alpha, as the graph keeps it: no premultiplication on read.
     OIIO::ImageSpec config;
@@ -161,6 +163,7 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path) {
 
 io::ImageHeader readHeader(const std::string& path) {
     requireRegularFile(path, "image");
+    checkPngChunks(path);
     auto in = OIIO::ImageInput::open(path);
     if (!in) fail(path, oiioError(nullptr));
     const OIIO::ImageSpec& spec = in->spec();

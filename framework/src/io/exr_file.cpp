@@ -1,5 +1,6 @@
 // EXR through the OpenEXR library (see exr_file.h for why not OpenImageIO).
 #include "exr_file.h"
+#include "exr_attributes.h"
 
 #include "exr_memory_stream.h"
 #include "exr_metadata.h"
@@ -117,6 +118,7 @@ void checkReadable(const std::string& path) {
     bool tiled = false, deep = false, multiPart = false;
     if (!Imf::isOpenExrFile(path.c_str(), tiled, deep, multiPart)) failRead(path, "not an OpenEXR file");
     if (deep) failRead(path, "deep images are not supported");
+    checkExrAttributeSizes(path);
 }
 
 struct Size {

@@ -1,6 +1,7 @@
 // PLY (ASCII, binary little- and big-endian): vertices with any scalar
 // properties, faces (polygons) and tristrips (-1 restarts), other elements
 // skipped. Properties other than x, y, z become fields named as in the file.
+#include "number_text.h"
 #include "binary_values.h"
 #include "poly_mesh.h"
 #include "text_cursor.h"
@@ -231,7 +232,7 @@ private:
                         continue;
                     }
                     if (!(v >= 0 && v < double(vertexCount_)) || v != std::floor(v))
-                        fail(e, i, "vertex index " + std::to_string(static_cast<long long>(v)) + " out of range, expected 0 to " +
+                        fail(e, i, "vertex index " + mesh::numberText(v) + " out of range, expected 0 to " +
                                        std::to_string(static_cast<long long>(vertexCount_) - 1));
                     cells->connectivity.push_back(static_cast<std::uint32_t>(v));
                 }

@@ -2,6 +2,7 @@
 // LINES, POLYGONS, TRIANGLE_STRIPS (classic "n size" layout and the 5.1
 // OFFSETS/CONNECTIVITY layout), POINT_DATA/CELL_DATA with SCALARS, VECTORS,
 // NORMALS, TEXTURE_COORDINATES, TENSORS, COLOR_SCALARS and FIELD arrays.
+#include "number_text.h"
 #include "binary_values.h"
 #include "poly_mesh.h"
 #include "text_cursor.h"
@@ -119,7 +120,7 @@ private:
 
     std::uint32_t pointIndex(double v, const std::string& what) const {
         if (!(v >= 0 && v < double(m_.pointCount())) || v != std::floor(v))
-            failLine(what + ": point index " + std::to_string(static_cast<long long>(v)) + " out of range, expected 0 to " +
+            failLine(what + ": point index " + mesh::numberText(v) + " out of range, expected 0 to " +
                      std::to_string(static_cast<long long>(m_.pointCount()) - 1));
         return static_cast<std::uint32_t>(v);
     }
@@ -157,7 +158,7 @@ private:
             if (k >= v.size()) failLine(what + ": cell " + std::to_string(c) + " lies beyond the declared size " + std::to_string(b));
             const double n = v[k++];
             if (!(n >= 0) || n > double(v.size() - k))
-                failLine(what + ": cell " + std::to_string(c) + " has " + std::to_string(static_cast<long long>(n)) +
+                failLine(what + ": cell " + std::to_string(c) + " has " + mesh::numberText(n) +
                          " points, more than the declared size " + std::to_string(b) + " holds");
             for (std::size_t j = 0; j < std::size_t(n); ++j) list.connectivity.push_back(pointIndex(v[k++], what));
             list.close(0);

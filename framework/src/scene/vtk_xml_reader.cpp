@@ -1,6 +1,7 @@
 // VTK XML PolyData (.vtp) and UnstructuredGrid (.vtu). DataArrays in ascii,
 // binary (inline base64) or appended (raw or base64) form, zlib-compressed or
 // not, UInt32 or UInt64 headers, either byte order, several pieces merged.
+#include "number_text.h"
 #include "binary_values.h"
 #include "poly_mesh.h"
 #include "text_cursor.h"
@@ -103,7 +104,7 @@ private:
 
     std::uint32_t pointIndex(double v, std::size_t base, std::size_t np, const XmlElement& e) const {
         if (!(v >= 0 && v < double(np)) || v != std::floor(v))
-            fail(e, "connectivity references point " + std::to_string(static_cast<long long>(v)) + ", expected 0 to " +
+            fail(e, "connectivity references point " + mesh::numberText(v) + ", expected 0 to " +
                         std::to_string(static_cast<long long>(np) - 1));
         return static_cast<std::uint32_t>(base + std::size_t(v));
     }

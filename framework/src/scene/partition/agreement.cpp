@@ -77,7 +77,8 @@ std::vector<SceneObject> agreeParts(std::vector<SceneObject> local, ProcessGroup
     std::vector<SceneObject> out;
     for (const auto& [rep, fields] : agreed) {
         auto mine = std::find_if(local.begin(), local.end(),
-                                 [&](const SceneObject& o) { return int(o.representation) == rep; });
+                                 // Captured by value: clang before 16 cannot capture a structured binding.
+                                 [r = rep](const SceneObject& o) { return int(o.representation) == r; });
         if (mine != local.end()) {
             out.push_back(std::move(*mine));
             continue;

@@ -1,0 +1,109 @@
+// Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI) with the
+// project's own writers, so that no binary file is committed:
+//   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
+// Text seeds are committed under tests/fuzz/corpus/<harness>/.
+#include "io/exr_file.h"
+#include "../../framework/oiio/module.h"
+
+#include <darkroom/buffer.h>
+#include <darkroom/framework/formats/npy.h>
+#include <darkroom/framework/formats/vti.h>
+#include <darkroom/framework/image_io.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+using namespace darkroom;
+
+namespace {
+
+// A small image whose pixels are not all alike (so compressors have work).
+std::shared_ptr<WritableBuffer> image(int w, int h, std::vector<ChannelDesc> channels) {
+    auto b = makeCpuBuffer(w, h, channels);
+    for (const ChannelDesc& c : channels) {
+        if (c.type == ChannelType::Float32) {
+            float* p = b->writeFloat(c.name);
+            for (int i = 0; i < w * h; ++i) p[i] = float(i % 7) / 7.0f + float(c.name.size());
+        } else {
+            std::uint32_t* p = b->writeUInt(c.name);
+            for (int i = 0; i < w * h; ++i) p[i] = std::uint32_t(i * 3);
+        }
+    }
+    return b;
+}
+
+void writeBytes(const fs::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: fuzz_seeds <folder>\n";
+        return 2;
+    }
+    const fs::path root = argv[1];
+    for (const char* d : {"exr", "image", "npy", "npz", "vti"}) fs::create_directories(root / d);
+    try {
+        // EXR: float RGBA with a camera-free G-buffer channel, each compression.
+        const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
+        for (const char* compression : {"none", "zip", "piz", "rle"}) {
+            ImageWriteOptions o;
+            o.compression = compression;
+            io::writeExr(*gbuffer, (root / "exr" / (std::string(compression) + ".exr")).string(), o);
+        }
+        // Found by the EXR harness: a string attribute declaring 1.9 GB
+        // (framework/src/io/exr_attributes.h); kept as a seed.
+        {
+            std::ifstream in(root / "exr" / "none.exr", std::ios::binary);
+            std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            exr.insert(8, std::string("comments\0string\0\x8d\x5c\x63\x72" "abc", 23));
+            writeBytes(root / "exr" / "lying-attribute", exr);
+        }
+        // Other formats through the OpenImageIO module. The harness takes the
+        // first byte as the extension's index (see harnesses/image.cpp).
+        const auto rgba = image(5, 4, {"R", "G", "B", "A"});
+        const std::pair<const char*, char> formats[] = {{"png", 0}, {"tif", 1}, {"tga", 2}, {"hdr", 4}, {"ppm", 5}};
+        for (const auto& [ext, index] : formats) {
+            const fs::path tmp = root / "image" / (std::string("tmp.") + ext);
+            oiio_module::writeImage(*rgba, tmp.string(), ImageWriteOptions{});
+            std::ifstream in(tmp, std::ios::binary);
+            const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            writeBytes(root / "image" / ext, std::string(1, index) + bytes);
+            fs::remove(tmp);
+        }
+        // Found by the image harness: a tEXt chunk declaring 1.9 GB in a
+        // 200-byte PNG (framework/oiio/png_chunks.h); kept as a seed.
+        {
+            std::ifstream in(root / "image" / "png", std::ios::binary);
+            std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const std::string lying("\x73\x6d\x65\x74tEXtComment\0", 16);
+            png.insert(1 + 8 + 25, lying);  // after the selector byte, signature and IHDR
+            writeBytes(root / "image" / "png-lying-text-chunk", png);
+        }
+        // NPY: C and Fortran order; NPZ: stored and deflated.
+        NpyArray a{"data", "<f4", {2, 3}, false, {1, 2, 3, 4, 5, 6}};
+        writeBytes(root / "npy" / "c-order.npy", encodeNpy(a));
+        NpyArray f = a;
+        f.fortranOrder = true;
+        writeBytes(root / "npy" / "fortran-order.npy", encodeNpy(f));
+        NpyArray depth{"depth", "<f4", {1, 2, 2}, false, {0.5f, 1, 2, 3}};
+        writeNpz((root / "npz" / "stored.npz").string(), {a, depth}, false);
+        writeNpz((root / "npz" / "deflated.npz").string(), {a, depth}, true);
+        // VTI: appended raw, base64 and zlib, with a TTK camera.
+        const auto vtiImage = image(3, 2, {"Z", "Scalar"});
+        TtkCamera camera;
+        camera.width = 3;
+        camera.height = 2;
+        writeVti((root / "vti" / "raw.vti").string(), *vtiImage, camera);
+        writeVti((root / "vti" / "base64.vti").string(), *vtiImage, camera, {.base64 = true});
+        writeVti((root / "vti" / "zlib.vti").string(), *vtiImage, std::nullopt, {.base64 = true, .zlib = true});
+    } catch (const std::exception& e) {
+        std::cerr << "fuzz_seeds: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

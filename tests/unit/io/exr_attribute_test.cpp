@@ -1,0 +1,99 @@
+// An OpenEXR header attribute that declares more bytes than the file holds is
+// refused before OpenEXR allocates it. Found by the EXR fuzz harness
+// (tests/fuzz): a string attribute declaring 1,919,120,141 bytes in a small
+// file made OpenEXR allocate 1.9 GB while reading the header.
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <darkroom/framework/image_io.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+
+namespace {
+
+void putLE32(std::string& s, std::uint32_t v) {
+    for (int b = 0; b < 4; ++b) s += char((v >> (8 * b)) & 0xff);
+}
+
+// Magic, version 2 with `flags`, then one attribute.
+std::string exrWithAttribute(std::uint32_t declared, unsigned flags = 0) {
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u | flags);
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, declared);
+    exr += "abc";
+    return exr;
+}
+
+std::string inputErrorOf(const std::string& path) {
+    try {
+        readImage(path);
+    } catch (const InputError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not an InputError: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "no error";
+    return {};
+}
+
+}  // namespace
+
+TEST(ExrAttributes, AttributeLongerThanTheFileIsRefusedBeforeOpenExr) {
+    test::TempDir dir;
+    const std::string path = dir.file("lying-attribute.exr");
+    test::writeText(path, exrWithAttribute(1919120141u));
+    EXPECT_THAT(inputErrorOf(path),
+                HasSubstr(path + ": OpenEXR attribute 'comments' (string) at byte 8 declares 1919120141 bytes"));
+}
+
+TEST(ExrAttributes, NegativeSizeInAMultiPartHeaderIsRefused) {
+    test::TempDir dir;
+    const std::string path = dir.file("negative.exr");
+    test::writeText(path, exrWithAttribute(0xffffff00u, 0x1000));  // multi-part flag
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("declares -256 bytes"));
+}
+
+// OpenEXR reads a channel list to its empty name whatever size it declares;
+// the check follows it there, so the attribute after it is the one OpenEXR
+// reads next (the fuzzer's second finding: a channel list declaring fewer
+// bytes than it holds hid the 2 GB string attribute behind it).
+TEST(ExrAttributes, AttributeAfterAChannelListOfTheWrongSizeIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("after-chlist.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string("channels\0chlist\0", 16);
+    putLE32(exr, 2);  // wrong: the list below is 19 bytes
+    exr += std::string("R\0", 2) + std::string(16, '\1') + std::string(1, '\0');
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, 2003763213u);
+    exr += "abc";
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 47 declares 2003763213"));
+}
+
+// OpenEXR reads attribute names of up to 255 characters even without the
+// long-names flag; so does the check (the fuzzer's third finding: a 66-character
+// name stopped the check, and OpenEXR went on to a 2 GB string attribute).
+TEST(ExrAttributes, AttributeAfterALongNameIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("long-name.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string(66, 'n') + std::string("\0int\0", 5);
+    putLE32(exr, 4);
+    exr += std::string(4, '\0');
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, 1996488717u);
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 87 declares 1996488717"));
+}
