@@ -3,6 +3,7 @@
 #include "vtk_data_array.h"
 
 #include "base64.h"
+#include "number_text.h"
 #include "text_cursor.h"
 
 #include <darkroom/error.h>
@@ -56,7 +57,13 @@ private:
 std::size_t headerWord(const VtkXmlEncoding& f_, ByteSource& src, const std::string& where) {
     std::string b, err;
     if (!src.read(sizeOf(f_.headerType), b, err)) throw Error(where + err);
-    return std::size_t(loadValue(f_.headerType, b.data(), f_.bigEndian));
+    const double v = loadValue(f_.headerType, b.data(), f_.bigEndian);
+    // Read through a double: a UInt64 word near 2^64 (or a negative signed
+    // one) would not convert to size_t (undefined behaviour, found by the vti
+    // fuzz harness). No real block is anywhere near 2^62 bytes.
+    if (!(v >= 0.0) || v >= 4.611686018427387904e18)
+        throw InputError(where + "a block header declares " + numberText(v) + " bytes; expected a byte count");
+    return std::size_t(v);
 }
 
 // What a block may declare: the bytes its array needs, and the decoded-bytes limit.

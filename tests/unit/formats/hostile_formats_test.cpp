@@ -92,6 +92,21 @@ TEST(HostileVti, ZlibDataLargerThanTheImageIsRefusedBeforeInflating) {
     EXPECT_THAT(msg, HasSubstr("declares 1073741824 bytes but the array needs at most 16"));
 }
 
+TEST(HostileVti, ABlockHeaderNear2To64IsRefusedNotConverted) {
+    // Found by the vti fuzz harness: a UInt64 header word of 2^64 - 1 was
+    // read through a double and converted to size_t (undefined behaviour).
+    test::TempDir dir;
+    const std::string path = dir.file("huge-header.vti");
+    const std::string b64(32, '/');  // 24 bytes of 0xFF
+    std::string text = vti("0 1 0 1 0 0", "<PointData>\n<DataArray type=\"Float32\" Name=\"Z\" format=\"binary\">" +
+                                              b64 + "</DataArray>\n</PointData>\n");
+    text.insert(text.find(" version"), " header_type=\"UInt64\" compressor=\"vtkZLibDataCompressor\"");
+    test::writeText(path, text);
+    const std::string msg = inputError([&] { readVti(path); });
+    EXPECT_THAT(msg, HasSubstr(path + ":5: DataArray 'Z'"));
+    EXPECT_THAT(msg, HasSubstr("a block header declares 1.84467e+19 bytes; expected a byte count"));
+}
+
 TEST(HostileVti, DeeplyNestedElementsAreRefused) {
     test::TempDir dir;
     const std::string path = dir.file("deep.vti");
