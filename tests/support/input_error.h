@@ -1,5 +1,5 @@
 #pragma once
-// For tests of refused input: the message of the darkroom::InputError that
+// For tests of refused input and failed writes: the message of the darkroom::InputError that
 // `fn` throws, checked to be one line; "" and a test failure when it throws
 // something else or nothing.
 #include <darkroom/error.h>
@@ -24,6 +24,17 @@ inline std::string inputError(const std::function<void()>& fn) {
     }
     ADD_FAILURE() << "no error";
     return {};
+}
+
+// The message of the darkroom::Error (of any kind) `fn` throws, or
+// "(no error)".
+inline std::string errorOf(const std::function<void()>& fn) {
+    try {
+        fn();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
 }
 
 }  // namespace darkroom::test

@@ -2,6 +2,7 @@
 // only what Darkroom wrote and refuses a folder it did not create; resume
 // refuses a database made from something else, naming what changed; a
 // refusal leaves no lock; a product whose write fails is never listed.
+#include "input_error.h"
 #include "cinema_test_data.h"
 #include "file_size_limit.h"
 #include "test_support.h"
@@ -18,6 +19,7 @@
 #include <functional>
 
 using namespace darkroom;
+using darkroom::test::errorOf;
 using ::testing::HasSubstr;
 using ::testing::Not;
 namespace fs = std::filesystem;
@@ -37,15 +39,6 @@ void writeGrid(const std::string& path, CinemaWriterOptions options = {}) {
     for (const auto& p : test::gridEntries())
         if (!w.hasEntry(p)) w.addEntry(p, *test::gridImage(p));
     w.finish();
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 std::map<std::string, std::string> folderBytes(const std::string& dir) {

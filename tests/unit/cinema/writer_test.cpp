@@ -1,6 +1,7 @@
 // The writer: file layout, read-back, refusal to overwrite, resume and the
 // in-process side of locking. Cross-process locking and SIGKILL are in
 // kill_resume_test.cpp.
+#include "input_error.h"
 #include "cinema_test_data.h"
 #include "test_support.h"
 
@@ -17,6 +18,7 @@
 #include <unistd.h>
 
 using namespace darkroom;
+using darkroom::test::errorOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -29,15 +31,6 @@ void writeGrid(const std::string& path, CinemaWriterOptions options = {}) {
     for (const auto& p : test::gridEntries())
         if (!w.hasEntry(p)) w.addEntry(p, *test::gridImage(p));
     w.finish();
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 }  // namespace

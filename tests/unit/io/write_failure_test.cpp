@@ -3,6 +3,7 @@
 // was at the path untouched with no temporary file beside it. The failure is
 // made with RLIMIT_FSIZE (file_size_limit.h): writes past the limit fail
 // with EFBIG, no root or strace needed.
+#include "input_error.h"
 #include "file_size_limit.h"
 #include "test_support.h"
 
@@ -20,6 +21,7 @@
 #include <functional>
 
 using namespace darkroom;
+using darkroom::test::errorOf;
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
@@ -35,15 +37,6 @@ std::shared_ptr<WritableBuffer> noise() {
         h *= 0x5bd1e995u;
         return float(h & 0xffff) / 65535.0f;
     });
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 std::size_t temporaryFiles(const std::string& dir) {
