@@ -11,22 +11,16 @@
 
 namespace darkroom::passes {
 
-int rowOrigin(const DarkeningJob& job) {
-    // The margin, the box's reach for the spans and its end samples, a vector.
-    const int r = job.horizontal[0].radius;
-    return cascadeMargin(job.horizontal, 0) + 3 * r + 2 + 64;
-}
-int rowLength(const DarkeningJob& job) { return job.width + 2 * rowOrigin(job); }
 std::size_t rowScratch(const DarkeningJob& job) {
-    int levels = 0;
-    while ((2 << levels) <= 2 * job.horizontal[0].radius + 1) ++levels;
-    return std::size_t(4 + levels) * std::size_t(rowLength(job));
+    // Four blocks with the cascade's margins, and a row without surface for
+    // the rows past the bottom.
+    const std::size_t samples = std::size_t(job.width) + 2 * std::size_t(cascadeMargin(job.horizontal, 0));
+    return 4 * samples * kBlockRows + std::size_t(job.width);
 }
-int columnSamples(const DarkeningJob& job) { return job.height + 2 * cascadeMargin(job.vertical, 0); }
 std::size_t columnScratch(const DarkeningJob& job) {
     // Four strips with margins, the strip's depth, its mask sums in double.
-    return (4 * std::size_t(columnSamples(job)) + std::size_t(job.height)) * kStripColumns +
-           2 * std::size_t(job.height) * kStripColumns;
+    const std::size_t samples = std::size_t(job.height) + 2 * std::size_t(cascadeMargin(job.vertical, 0));
+    return (4 * samples + std::size_t(job.height)) * kStripColumns + 2 * std::size_t(job.height) * kStripColumns;
 }
 
 namespace {
@@ -60,9 +54,10 @@ void depthDarkening(Context& ctx, const DarkeningJob& job) {
     // when the pass runs again).
     const auto sums = ctx.allocate(w, h, {"depth", "mask"}, Fill::None);
     const BlurPlanes planes{sums->writeFloat("depth"), sums->writeFloat("mask")};
-    ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
+    const int blocks = (h + kBlockRows - 1) / kBlockRows;
+    ctx.parallelFor(0, blocks, 1, [&](int b0, int b1) {
         float* scratch = threadScratch(rowScratch(job));
-        for (int y = y0; y < y1; ++y) blurRow(job, reference, y, planes, scratch);
+        for (int b = b0; b < b1; ++b) blurRows(job, reference, b * kBlockRows, planes, scratch);
     });
     if (ctx.cancelled()) throw Cancelled();
     const int strips = (w + kStripColumns - 1) / kStripColumns;

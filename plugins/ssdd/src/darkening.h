@@ -26,22 +26,23 @@ void depthDarkening(Context& ctx, const DarkeningJob& job);
 // Depths are blurred relative to `reference` (the nearest surface), which keeps
 // the sums accurate for scenes far from the camera.
 constexpr int kStripColumns = 32;  // columns blurred together along y
+constexpr int kBlockRows = 16;     // rows blurred together along x
 struct BlurPlanes {
     float* depth;  // sum of weight * (Z - reference) over surface pixels
     float* mask;   // sum of weight over surface pixels
 };
-// Row y: masked depth along x into `planes`. `scratch` holds rowScratch(job) floats.
-void blurRow(const DarkeningJob& job, float reference, int y, const BlurPlanes& planes, float* scratch);
+// Rows [y0, y0 + kBlockRows) (fewer at the bottom): masked depth along x into
+// `planes`. The rows are transposed into a block (x major), so the boxes run
+// as running sums, one lane per row, like the columns: the cost does not
+// depend on sigma. `scratch` holds rowScratch(job) floats.
+void blurRows(const DarkeningJob& job, float reference, int y0, const BlurPlanes& planes, float* scratch);
 // Columns [x0, x0 + kStripColumns) (fewer at the right): `planes` along y,
-// then the factor. `scratch` holds columnScratch(job) floats.
+// then the factor. A whole strip reads the planes and the depth and writes the
+// factor in place; only a narrower strip at the right is copied.
+// `scratch` holds columnScratch(job) floats.
 void blurColumnsAndDarken(const DarkeningJob& job, float reference, int x0, const BlurPlanes& planes, float* scratch);
-// A row buffer: position x at x + rowOrigin, rowLength floats, room for the
-// cascade's margins and for vectors running past them; rowScratch: what
-// blurRow needs. columnSamples: a column with the cascade's margins.
-int rowOrigin(const DarkeningJob& job);
-int rowLength(const DarkeningJob& job);
+// What blurRows and blurColumnsAndDarken need of scratch, in floats.
 std::size_t rowScratch(const DarkeningJob& job);
-int columnSamples(const DarkeningJob& job);
 std::size_t columnScratch(const DarkeningJob& job);
 // The nearest surface depth of [begin, end), +inf when there is none.
 float nearestDepth(const float* depth, std::size_t begin, std::size_t end);

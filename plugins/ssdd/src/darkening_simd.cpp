@@ -11,7 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace darkroom::passes {
@@ -28,20 +31,21 @@ struct Extent {
 };
 
 // One extended box along an axis, for the W values of each sample (the rows
-// of a block, the columns of a strip: samples W floats apart, position p
-// stored at p + `origin`): out(p) = the sum over the box around p of the
-// input, which is 0 outside its extent; accumulated in double. The W values
-// are independent running sums stepped together, which hides the latency of
-// each one's chain of additions.
+// of a block, the columns of a strip): out(p) = the sum over the box around p
+// of the input, which is 0 outside its extent; accumulated in double. The W
+// values are independent running sums stepped together, which hides the
+// latency of each one's chain of additions, and each lane's sums run in the
+// same order whatever the vector width.
 template <int W>
 class Box {
 public:
-    Box(const ExtendedBox& b, Extent in, Extent out, int origin)
-        : r_(b.radius), alpha_(b.alpha), in_(in), out_(out), origin_(origin) {}
+    Box(const ExtendedBox& b, Extent in, Extent out) : r_(b.radius), alpha_(b.alpha), in_(in), out_(out) {}
 
-    // emit(p, k, value) for every output position p and vector k of W.
+    // emit(p, k, value) for every output position p and vector k of W. The
+    // input's W values of position p start at in + p * stride (p < 0 in the
+    // margins); a stride wider than W reads a strip straight from a plane.
     template <class Emit>
-    HWY_INLINE void run(const float* in, const Emit& emit) const {
+    HWY_INLINE void run(const float* in, std::ptrdiff_t stride, const Emit& emit) const {
         const D d;
         const DF df;
         constexpr int kMaxVectors = W;  // enough for one lane per vector
@@ -49,28 +53,34 @@ public:
         const V alpha = hn::Set(d, alpha_), zero = hn::Zero(d);
         auto at = [&](int p, int k) {
             if (p < in_.lo || p >= in_.hi) return zero;
-            return hn::PromoteTo(d, hn::LoadU(df, in + std::size_t(p + origin_) * W + std::size_t(k * lanes)));
+            return hn::PromoteTo(d, hn::LoadU(df, in + p * stride + k * lanes));
         };
+        // A plane's rows are far apart: ask for the ones entering the box early.
+        const bool plane = stride != W;
         V sum[kMaxVectors];
         for (int k = 0; k < vectors; ++k) {
             sum[k] = zero;
             for (int p = std::max(out_.lo - r_, in_.lo); p <= std::min(out_.lo + r_, in_.hi - 1); ++p)
                 sum[k] = hn::Add(sum[k], at(p, k));
         }
-        for (int p = out_.lo; p < out_.hi; ++p)
+        for (int p = out_.lo; p < out_.hi; ++p) {
+            if (plane && p + r_ + 25 < in_.hi)
+                for (int c = 0; c < W; c += 16) __builtin_prefetch(in + (p + r_ + 25) * stride + c);
             for (int k = 0; k < vectors; ++k) {
                 const V leaving = at(p - r_ - 1, k), next = at(p + r_ + 1, k);
                 if (p > out_.lo) sum[k] = hn::Add(sum[k], hn::Sub(at(p + r_, k), leaving));
                 emit(p, k, alpha_ > 0.0 ? hn::Add(sum[k], hn::Mul(alpha, hn::Add(leaving, next))) : sum[k]);
             }
+        }
     }
 
-    HWY_INLINE void run(const float* in, float* out) const {
+    // Into a block or strip: position p's W values at out + p * W.
+    HWY_INLINE void run(const float* in, std::ptrdiff_t stride, float* out) const {
         const D d;
         const DF df;
         const std::size_t lanes = hn::Lanes(d);
-        run(in, [&](int p, int k, V v) {
-            hn::StoreU(hn::DemoteTo(df, v), df, out + std::size_t(p + origin_) * W + std::size_t(k) * lanes);
+        run(in, stride, [&](int p, int k, V v) {
+            hn::StoreU(hn::DemoteTo(df, v), df, out + std::ptrdiff_t(p) * W + std::ptrdiff_t(k * lanes));
         });
     }
 
@@ -78,7 +88,6 @@ private:
     int r_;
     double alpha_;
     Extent in_, out_;
-    int origin_;
 };
 
 // The three boxes along an axis of n samples: box k reads the extent box k - 1
@@ -95,7 +104,7 @@ struct Cascade {
     }
     template <int W>
     Box<W> box(int k) const {
-        return Box<W>(boxes[std::size_t(k)], extent(k), extent(k + 1), origin());
+        return Box<W>(boxes[std::size_t(k)], extent(k), extent(k + 1));
     }
 };
 
@@ -123,134 +132,159 @@ HWY_INLINE V expNonPositive(V x) {
     return hn::IfThenElseZero(hn::Ge(x, hn::Set(d, -104.0)), hn::Mul(p, scale));
 }
 
-// One extended box along a row held in a buffer of `length` floats (position
-// p at p + origin, 0 outside the input's extent): for p in `extent`, out(p) =
-// the sum over [p - r, p + r] as a sum of power-of-two spans (levels[b][p] = the sum
-// of the 2^b samples from p, each level the sum of two of the one below), the
-// spans taken from the largest down, plus alpha times the two end samples.
-// Every sum is of non-negative numbers in an order fixed by the box alone (not
-// by the vector width): single precision is accurate and the bits are the
-// same on every instruction set.
-void BoxAlongRow(const float* in, float* out, float* levels, Extent extent, const ExtendedBox& b, int origin,
-                 int length) {
-    const hn::ScalableTag<float> df;
-    const int lanes = int(hn::Lanes(df));
-    const int r = b.radius, width = 2 * r + 1;
-    int top = 0;
-    while ((2 << top) <= width) ++top;
-    const float* level[32];
-    level[0] = in + origin;
-    const int lo = extent.lo - r - 1, hi = extent.hi + r + 1;  // positions the levels are needed at
-    for (int j = 1; j <= top; ++j) {
-        float* l = levels + std::size_t(j - 1) * std::size_t(length) + origin;
-        const int half = 1 << (j - 1);
-        for (int p = lo; p < hi; p += lanes)
-            hn::StoreU(hn::Add(hn::LoadU(df, level[j - 1] + p), hn::LoadU(df, level[j - 1] + p + half)), df, l + p);
-        level[j] = l;
-    }
-    const auto alpha = hn::Set(df, float(b.alpha));
-    const bool ends = b.alpha > 0.0;
-    for (int p = extent.lo; p < extent.hi; p += lanes) {
-        int start = p - r;
-        auto sum = hn::LoadU(df, level[top] + start);
-        start += 1 << top;
-        for (int j = top - 1; j >= 0; --j)
-            if (width & (1 << j)) {
-                sum = hn::Add(sum, hn::LoadU(df, level[j] + start));
-                start += 1 << j;
+#if HWY_TARGET != HWY_SCALAR
+using D4 = hn::FixedTag<float, 4>;
+using V4 = hn::Vec<D4>;
+
+// v[i] = row i of a 4 x 4 block becomes column i.
+HWY_INLINE void Transpose4(V4 v[4]) {
+    const D4 d4;
+    const hn::Repartition<std::uint64_t, D4> d64;
+    const V4 t0 = hn::InterleaveLower(d4, v[0], v[1]), t1 = hn::InterleaveLower(d4, v[2], v[3]);
+    const V4 t2 = hn::InterleaveUpper(d4, v[0], v[1]), t3 = hn::InterleaveUpper(d4, v[2], v[3]);
+    v[0] = hn::BitCast(d4, hn::InterleaveLower(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    v[1] = hn::BitCast(d4, hn::InterleaveUpper(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    v[2] = hn::BitCast(d4, hn::InterleaveLower(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+    v[3] = hn::BitCast(d4, hn::InterleaveUpper(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+}
+#endif
+
+// kBlockRows rows of depth into a block (x of row r at x * kBlockRows + r):
+// Z - reference and 1 where there is a surface, 0 and 0 where there is none.
+void RowsIntoBlock(const float* const* row, int w, float reference, float* depth, float* mask) {
+    constexpr int R = kBlockRows;
+    int x0 = 0;
+#if HWY_TARGET != HWY_SCALAR
+    const D4 d4;
+    const V4 zero = hn::Zero(d4), one = hn::Set(d4, 1.0f), ref = hn::Set(d4, reference);
+    for (; x0 + 4 <= w; x0 += 4)
+        for (int g = 0; g < R; g += 4) {
+            V4 z[4], m[4];
+            for (int i = 0; i < 4; ++i) {
+                const V4 a = hn::LoadU(d4, row[g + i] + x0);
+                const auto surface = hn::Eq(hn::Sub(a, a), zero);
+                z[i] = hn::IfThenElseZero(surface, hn::Sub(a, ref));
+                m[i] = hn::IfThenElseZero(surface, one);
             }
-        if (ends) sum = hn::Add(sum, hn::Mul(alpha, hn::Add(hn::LoadU(df, level[0] + p - r - 1), hn::LoadU(df, level[0] + p + r + 1))));
-        hn::StoreU(sum, df, out + origin + p);
-    }
-    // The vectors ran past the extent: outside it the next box must see 0.
-    std::fill(out, out + origin + extent.lo, 0.0f);
-    std::fill(out + origin + extent.hi, out + length, 0.0f);
+            Transpose4(z);
+            Transpose4(m);
+            for (int j = 0; j < 4; ++j) {
+                hn::StoreU(z[j], d4, depth + std::size_t(x0 + j) * R + std::size_t(g));
+                hn::StoreU(m[j], d4, mask + std::size_t(x0 + j) * R + std::size_t(g));
+            }
+        }
+#endif
+    for (int x = x0; x < w; ++x)
+        for (int r = 0; r < R; ++r) {
+            const float z = row[r][x];
+            const bool surface = z - z == 0.0f;
+            depth[std::size_t(x) * R + std::size_t(r)] = surface ? z - reference : 0.0f;
+            mask[std::size_t(x) * R + std::size_t(r)] = surface ? 1.0f : 0.0f;
+        }
 }
 
-void BlurRow(const DarkeningJob& job, float reference, int y, const BlurPlanes& planes, float* scratch) {
-    const hn::ScalableTag<float> df;
-    const int lanes = int(hn::Lanes(df));
-    const int w = job.width;
+// The first `rows` rows of a block back into a plane of row stride w.
+void BlockIntoRows(const float* block, int w, int rows, float* out) {
+    constexpr int R = kBlockRows;
+    int x0 = 0;
+#if HWY_TARGET != HWY_SCALAR
+    const D4 d4;
+    // Four rows at a time along the whole width: four sequential streams of
+    // stores rather than sixteen interleaved ones.
+    const int whole = w - w % 4;
+    for (int g = 0; g < rows; g += 4)
+        for (int x = 0; x < whole; x += 4) {
+            V4 v[4];
+            for (int j = 0; j < 4; ++j) v[j] = hn::LoadU(d4, block + std::size_t(x + j) * R + std::size_t(g));
+            Transpose4(v);
+            for (int i = 0; i < 4 && g + i < rows; ++i) hn::StoreU(v[i], d4, out + std::size_t(g + i) * std::size_t(w) + std::size_t(x));
+        }
+    x0 = whole;
+#endif
+    for (int x = x0; x < w; ++x)
+        for (int r = 0; r < rows; ++r) out[std::size_t(r) * std::size_t(w) + std::size_t(x)] = block[std::size_t(x) * R + std::size_t(r)];
+}
+
+void BlurRows(const DarkeningJob& job, float reference, int y0, const BlurPlanes& planes, float* scratch) {
+    constexpr int R = kBlockRows;
+    const int w = job.width, rows = std::min(R, job.height - y0);
     const Cascade cascade{job.horizontal, w};
-    const int origin = rowOrigin(job), length = rowLength(job);
-    float* depth[2] = {scratch, scratch + length};
-    float* mask[2] = {scratch + 2 * std::size_t(length), scratch + 3 * std::size_t(length)};
-    float* levels = scratch + 4 * std::size_t(length);
-    const float* row = job.depth + std::size_t(y) * std::size_t(w);
-    for (float* b : {depth[0], mask[0]}) {  // 0 outside the row
-        std::fill(b, b + origin, 0.0f);
-        std::fill(b + origin + w, b + length, 0.0f);
-    }
-    const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), ref = hn::Set(df, reference);
-    int x = 0;
-    for (; x + lanes <= w; x += lanes) {
-        const auto z = hn::LoadU(df, row + x);
-        const auto surface = hn::Eq(hn::Sub(z, z), zero);
-        hn::StoreU(hn::IfThenElseZero(surface, hn::Sub(z, ref)), df, depth[0] + origin + x);
-        hn::StoreU(hn::IfThenElseZero(surface, one), df, mask[0] + origin + x);
-    }
-    for (; x < w; ++x) {
-        const float z = row[x];
-        const bool surface = z - z == 0.0f;
-        depth[0][origin + x] = surface ? z - reference : 0.0f;
-        mask[0][origin + x] = surface ? 1.0f : 0.0f;
-    }
+    const std::size_t size = std::size_t(cascade.samples()) * R, origin = std::size_t(cascade.origin()) * R;
+    // Position 0 of each block; the margins before and after it.
+    float* depth[2] = {scratch + origin, scratch + size + origin};
+    float* mask[2] = {scratch + 2 * size + origin, scratch + 3 * size + origin};
+    float* noSurface = scratch + 4 * size;
+    const float* row[R];
+    for (int r = 0; r < R; ++r) row[r] = r < rows ? job.depth + std::size_t(y0 + r) * std::size_t(w) : noSurface;
+    if (rows < R) std::fill_n(noSurface, w, std::numeric_limits<float>::infinity());
+    RowsIntoBlock(row, w, reference, depth[0], mask[0]);
     for (int k = 0; k < kBoxes; ++k) {
-        const ExtendedBox& b = job.horizontal[std::size_t(k)];
-        BoxAlongRow(depth[k % 2], depth[(k + 1) % 2], levels, cascade.extent(k + 1), b, origin, length);
-        BoxAlongRow(mask[k % 2], mask[(k + 1) % 2], levels, cascade.extent(k + 1), b, origin, length);
+        const Box<R> box = cascade.box<R>(k);
+        box.run(depth[k % 2], R, depth[(k + 1) % 2]);
+        box.run(mask[k % 2], R, mask[(k + 1) % 2]);
     }
-    std::copy_n(depth[kBoxes % 2] + origin, w, planes.depth + std::size_t(y) * std::size_t(w));
-    std::copy_n(mask[kBoxes % 2] + origin, w, planes.mask + std::size_t(y) * std::size_t(w));
+    BlockIntoRows(depth[kBoxes % 2], w, rows, planes.depth + std::size_t(y0) * std::size_t(w));
+    BlockIntoRows(mask[kBoxes % 2], w, rows, planes.mask + std::size_t(y0) * std::size_t(w));
 }
 
 void BlurColumnsAndDarken(const DarkeningJob& job, float reference, int x0, const BlurPlanes& planes, float* scratch) {
+    constexpr int C = kStripColumns;
     const D d;
     const DF df;
-    const int w = job.width, h = job.height, columns = std::min(kStripColumns, w - x0);
+    const int w = job.width, h = job.height, columns = std::min(C, w - x0);
     const Cascade cascade{job.vertical, h};
-    const int origin = cascade.origin();
-    const std::size_t size = std::size_t(cascade.samples()) * kStripColumns;
-    float* depth[2] = {scratch, scratch + size};
-    float* mask[2] = {scratch + 2 * size, scratch + 3 * size};
-    float* z = scratch + 4 * size;  // the depth of the strip, then its factor
-    double* masked = reinterpret_cast<double*>(z + std::size_t(h) * kStripColumns);  // the mask's last sums
-    for (int y = 0; y < h; ++y) {
-        const std::size_t from = std::size_t(y) * std::size_t(w) + std::size_t(x0);
-        const std::size_t to = std::size_t(y + origin) * kStripColumns;
-        // The strip's rows are a row apart in the planes: ask for later ones early.
-        if (y + 8 < h) {
-            __builtin_prefetch(planes.depth + from + 8 * std::size_t(w));
-            __builtin_prefetch(planes.mask + from + 8 * std::size_t(w));
-            __builtin_prefetch(job.depth + from + 8 * std::size_t(w));
+    const std::size_t size = std::size_t(cascade.samples()) * C, origin = std::size_t(cascade.origin()) * C;
+    float* depth[2] = {scratch + origin, scratch + size + origin};
+    float* mask[2] = {scratch + 2 * size + origin, scratch + 3 * size + origin};
+    float* z = scratch + 4 * size;  // a narrow strip's depth, then its factor
+    double* masked = reinterpret_cast<double*>(z + std::size_t(h) * C);  // the mask's last sums
+    // A whole strip is read from the planes and the depth and its factor
+    // written in place, C floats of each row apart; a narrow one is copied,
+    // as reading C floats would run past the last row.
+    const float* depthIn = planes.depth + x0;
+    const float* maskIn = planes.mask + x0;
+    const float* zIn = job.depth + x0;
+    float* factorOut = job.factor + x0;
+    std::ptrdiff_t stride = w;
+    if (columns < C) {
+        for (int y = 0; y < h; ++y) {
+            const std::size_t from = std::size_t(y) * std::size_t(w) + std::size_t(x0), to = std::size_t(y) * C;
+            std::copy_n(planes.depth + from, columns, depth[0] + to);
+            std::copy_n(planes.mask + from, columns, mask[0] + to);
+            std::copy_n(job.depth + from, columns, z + to);
+            std::fill(depth[0] + to + columns, depth[0] + to + C, 0.0f);
+            std::fill(mask[0] + to + columns, mask[0] + to + C, 0.0f);
+            std::fill(z + to + columns, z + to + C, std::numeric_limits<float>::infinity());
         }
-        std::copy_n(planes.depth + from, columns, depth[0] + to);
-        std::copy_n(planes.mask + from, columns, mask[0] + to);
-        std::copy_n(job.depth + from, columns, z + std::size_t(y) * kStripColumns);
-        for (int c = columns; c < kStripColumns; ++c) {
-            depth[0][to + c] = mask[0][to + c] = 0.0f;
-            z[std::size_t(y) * kStripColumns + c] = std::numeric_limits<float>::infinity();
-        }
+        depthIn = depth[0];
+        maskIn = mask[0];
+        zIn = factorOut = z;
+        stride = C;
     }
-    for (int k = 0; k + 1 < kBoxes; ++k) {
-        const Box<kStripColumns> box = cascade.box<kStripColumns>(k);
-        box.run(depth[k % 2], depth[(k + 1) % 2]);
-        box.run(mask[k % 2], mask[(k + 1) % 2]);
+    const Box<C> first = cascade.box<C>(0);
+    first.run(depthIn, stride, depth[1]);
+    first.run(maskIn, stride, mask[1]);
+    for (int k = 1; k + 1 < kBoxes; ++k) {
+        const Box<C> box = cascade.box<C>(k);
+        box.run(depth[k % 2], C, depth[(k + 1) % 2]);
+        box.run(mask[k % 2], C, mask[(k + 1) % 2]);
     }
     // The last box of the mask, then of the depth with the factor.
     const float* lastDepth = depth[(kBoxes - 1) % 2];
     const float* lastMask = mask[(kBoxes - 1) % 2];
-    const Box<kStripColumns> box = cascade.box<kStripColumns>(kBoxes - 1);
+    const Box<C> box = cascade.box<C>(kBoxes - 1);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), ref = hn::Set(d, double(reference));
     const V minusStrength = hn::Set(d, -job.strength), footprint = hn::Set(d, job.footprint);
-    const std::size_t lanes = hn::Lanes(d);
+    const std::ptrdiff_t lanes = std::ptrdiff_t(hn::Lanes(d));
     // The mask's sums stay in double for the division.
-    box.run(lastMask, [&](int y, int k, V m) { hn::StoreU(m, d, masked + std::size_t(y) * kStripColumns + k * lanes); });
-    box.run(lastDepth, [&](int y, int k, V sum) {
-        float* out = z + std::size_t(y) * kStripColumns + k * lanes;
-        const V depthHere = hn::PromoteTo(d, hn::LoadU(df, out));
+    box.run(lastMask, C, [&](int y, int k, V m) { hn::StoreU(m, d, masked + std::ptrdiff_t(y) * C + k * lanes); });
+    box.run(lastDepth, C, [&](int y, int k, V sum) {
+        const std::ptrdiff_t at = std::ptrdiff_t(y) * stride + k * lanes;
+        if (k == 0 && stride != C && y + 24 < h)
+            for (int c = 0; c < C; c += 16) __builtin_prefetch(zIn + at + 24 * stride + c);
+        const V depthHere = hn::PromoteTo(d, hn::LoadU(df, zIn + at));
         const auto surface = hn::Eq(hn::Sub(depthHere, depthHere), zero);
-        const V blurred = hn::Add(hn::Div(sum, hn::LoadU(d, masked + std::size_t(y) * kStripColumns + k * lanes)), ref);
+        const V blurred = hn::Add(hn::Div(sum, hn::LoadU(d, masked + std::ptrdiff_t(y) * C + k * lanes)), ref);
         const V dd = hn::Sub(blurred, depthHere);
         // Scale-free: a depth step is compared with how wide the blur is in
         // the world at this depth.
@@ -261,10 +295,11 @@ void BlurColumnsAndDarken(const DarkeningJob& job, float reference, int x0, cons
             f = hn::IfThenElse(darker, expNonPositive(hn::Div(hn::Mul(minusStrength, hn::Neg(dd)), s)), one);
             f = hn::IfThenElseZero(hn::Ge(f, zero), f);
         }
-        hn::StoreU(hn::DemoteTo(df, f), df, out);
+        hn::StoreU(hn::DemoteTo(df, f), df, factorOut + at);
     });
-    for (int y = 0; y < h; ++y)
-        std::copy_n(z + std::size_t(y) * kStripColumns, columns, job.factor + std::size_t(y) * std::size_t(w) + std::size_t(x0));
+    if (columns < C)
+        for (int y = 0; y < h; ++y)
+            std::copy_n(z + std::size_t(y) * C, columns, job.factor + std::size_t(y) * std::size_t(w) + std::size_t(x0));
 }
 
 float NearestDepth(const float* depth, std::size_t begin, std::size_t end) {
@@ -289,11 +324,11 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace darkroom::passes {
-HWY_EXPORT(BlurRow);
+HWY_EXPORT(BlurRows);
 HWY_EXPORT(BlurColumnsAndDarken);
 HWY_EXPORT(NearestDepth);
-void blurRow(const DarkeningJob& job, float reference, int y, const BlurPlanes& planes, float* scratch) {
-    HWY_DYNAMIC_DISPATCH(BlurRow)(job, reference, y, planes, scratch);
+void blurRows(const DarkeningJob& job, float reference, int y0, const BlurPlanes& planes, float* scratch) {
+    HWY_DYNAMIC_DISPATCH(BlurRows)(job, reference, y0, planes, scratch);
 }
 void blurColumnsAndDarken(const DarkeningJob& job, float reference, int x0, const BlurPlanes& planes, float* scratch) {
     HWY_DYNAMIC_DISPATCH(BlurColumnsAndDarken)(job, reference, x0, planes, scratch);
