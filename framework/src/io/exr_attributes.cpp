@@ -1,9 +1,12 @@
 #include "exr_attributes.h"
 
 #include <darkroom/error.h>
+#include <darkroom/limits.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <map>
 
 namespace darkroom::io {
 
@@ -19,6 +22,65 @@ bool readName(std::ifstream& in, std::size_t max, std::string& out) {
         out += c;
     }
     return false;
+}
+
+bool readInt32(std::ifstream& in, std::int32_t& v) {
+    unsigned char b[4];
+    if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+    v = std::int32_t(std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) |
+                     (std::uint32_t(b[3]) << 24));
+    return true;
+}
+
+// The attribute types OpenEXR 3.1 reads at their own size whatever size the
+// header declares (TypedAttribute<T>::readValueFrom reads T's fields): the
+// walk must step over the same bytes OpenEXR does, or a lying declared size
+// hides the attributes after it.
+int naturalSize(const std::string& type) {
+    static const std::map<std::string, int> sizes = {
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
+        {"double", 8}, {"envmap", 1},  {"float", 4},           {"int", 4},          {"keycode", 28},
+        {"lineOrder", 1}, {"m33d", 72}, {"m33f", 36},         {"m44d", 128},       {"m44f", 64},
+        {"rational", 8}, {"tiledesc", 9}, {"timecode", 8},    {"v2d", 16},         {"v2f", 8},
+        {"v2i", 8},      {"v3d", 24},   {"v3f", 12},          {"v3i", 12},
+    };
+    auto it = sizes.find(type);
+    return it == sizes.end() ? -1 : it->second;
+}
+
+// What one header tells about the memory OpenEXR and our reader will need.
+struct Part {
+    bool hasWindow = false;
+    std::int32_t window[4] = {0, 0, 0, 0};  // xMin, yMin, xMax, yMax
+    std::uint64_t channels = 0;
+    bool hasTiles = false;
+    std::uint32_t tile[2] = {0, 0};
+};
+
+// Checked before OpenEXR opens the file: InputFile's constructor sizes its
+// line buffers from the data window (an 867-byte file declaring 4,195,297 x
+// 131,073 pixels made it clear gigabytes, found by the exr harness).
+void checkPart(const Part& part, const std::string& path) {
+    if (part.hasWindow) {
+        const std::int64_t w = std::int64_t(part.window[2]) - part.window[0] + 1;
+        const std::int64_t h = std::int64_t(part.window[3]) - part.window[1] + 1;
+        if (w > 0 && h > 0) {  // an empty window is OpenEXR's to report
+            const std::string where = path + ": OpenEXR data window";
+            checkImagePixels(std::uint64_t(w), std::uint64_t(h), where);
+            // Overflow-free: both sides are within the pixel limit's range.
+            checkBytes(Limit::DecodedBytes, std::uint64_t(w) * std::uint64_t(h) * std::max<std::uint64_t>(part.channels, 1) * 4,
+                       path, std::to_string(part.channels) + " channels of " + std::to_string(w) + " x " +
+                                 std::to_string(h) + " pixels");
+        }
+    }
+    if (part.hasTiles) checkImagePixels(part.tile[0], part.tile[1], path + ": OpenEXR tile size");
+}
+
+[[noreturn]] void failSize(const std::string& path, const std::string& name, const std::string& type, std::int64_t at,
+                           std::int64_t declared, std::int64_t left) {
+    throw InputError(path + ": OpenEXR attribute '" + name + "' (" + type + ") at byte " + std::to_string(at) +
+                     " declares " + std::to_string(declared) + " bytes, but the file has " + std::to_string(left) +
+                     " left (a truncated or corrupt header)");
 }
 
 }  // namespace
@@ -37,6 +99,7 @@ void checkExrAttributeSizes(const std::string& path) {
     const std::size_t maxName = 255;
     const bool multiPart = (head[5] & 0x10) != 0;
     bool headerHasAttributes = false;
+    Part part;
     std::string name, type;
     for (;;) {
         const std::int64_t at = std::int64_t(in.tellg());
@@ -44,28 +107,72 @@ void checkExrAttributeSizes(const std::string& path) {
         if (name.empty()) {
             // The end of a header; a multi-part file ends its list of headers
             // with one more empty name.
+            if (headerHasAttributes) checkPart(part, path);
             if (!multiPart || !headerHasAttributes) return;
             headerHasAttributes = false;
+            part = Part();
             continue;
         }
         headerHasAttributes = true;
-        unsigned char bytes[4];
-        if (!readName(in, maxName, type) || !in.read(reinterpret_cast<char*>(bytes), 4)) return;
-        const std::int32_t length = std::int32_t(std::uint32_t(bytes[0]) | (std::uint32_t(bytes[1]) << 8) |
-                                                 (std::uint32_t(bytes[2]) << 16) | (std::uint32_t(bytes[3]) << 24));
+        std::int32_t length = 0;
+        if (!readName(in, maxName, type) || !readInt32(in, length)) return;
         if (type == "chlist") {
             // OpenEXR reads a channel list up to its empty name, whatever the
             // declared size: follow it the same way (name, then 16 bytes).
             std::string channel;
-            while (readName(in, maxName, channel) && !channel.empty()) in.seekg(16, std::ios::cur);
+            while (readName(in, maxName, channel) && !channel.empty()) {
+                in.seekg(16, std::ios::cur);
+                ++part.channels;
+            }
             if (!in) return;
             continue;
         }
         const std::int64_t left = size - std::int64_t(in.tellg());
-        if (length < 0 || length > left)
-            throw InputError(path + ": OpenEXR attribute '" + name + "' (" + type + ") at byte " + std::to_string(at) +
-                             " declares " + std::to_string(length) + " bytes, but the file has " +
-                             std::to_string(left) + " left (a truncated or corrupt header)");
+        if (length < 0) failSize(path, name, type, at, length, left);
+        if (const int natural = naturalSize(type); natural >= 0) {
+            if (name == "dataWindow" && type == "box2i") {
+                part.hasWindow = true;
+                for (std::int32_t& v : part.window)
+                    if (!readInt32(in, v)) return;
+            } else if (name == "tiles" && type == "tiledesc") {
+                std::int32_t x = 0, y = 0;
+                if (!readInt32(in, x) || !readInt32(in, y)) return;
+                part.hasTiles = true;
+                part.tile[0] = std::uint32_t(x);
+                part.tile[1] = std::uint32_t(y);
+                in.seekg(1, std::ios::cur);
+            } else {
+                in.seekg(natural, std::ios::cur);
+            }
+            continue;
+        }
+        if (type == "preview") {
+            // Width and height, then 4 bytes a pixel, allocated as declared.
+            std::int32_t w = 0, h = 0;
+            if (!readInt32(in, w) || !readInt32(in, h)) return;
+            const std::int64_t bytes = 4 * std::int64_t(std::uint32_t(w)) * std::int64_t(std::uint32_t(h));
+            if (bytes > left - 8) failSize(path, name, type, at, 8 + bytes, left);
+            in.seekg(bytes, std::ios::cur);
+            continue;
+        }
+        if (length > left) failSize(path, name, type, at, length, left);
+        if (type == "stringvector") {
+            // Each string's own length is allocated before it is read.
+            std::int64_t read = 0;
+            while (read < length) {
+                std::int32_t n = 0;
+                if (!readInt32(in, n)) return;
+                read += 4;
+                if (n < 0 || n > length - read)
+                    throw InputError(path + ": OpenEXR attribute '" + name + "' (stringvector) at byte " +
+                                     std::to_string(at) + " holds a string of " + std::to_string(n) +
+                                     " bytes, but the attribute has " + std::to_string(length - read) +
+                                     " left (a corrupt header)");
+                in.seekg(n, std::ios::cur);
+                read += n;
+            }
+            continue;
+        }
         in.seekg(length, std::ios::cur);
     }
 }

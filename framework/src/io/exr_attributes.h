@@ -9,11 +9,14 @@ namespace darkroom::io {
 
 // Throws InputError naming the file, the attribute and its byte offset when
 // an attribute of an OpenEXR header (every part's, for multi-part files)
-// declares a negative size or more bytes than the file has left. A header
-// this walk cannot follow is left to OpenEXR to report. The walk follows
-// OpenEXR's own reading where it ignores the declared size (a channel list
-// is read to its end); other fixed-size types whose declared size disagrees
-// with their natural size are not followed (docs/formats.md, Fuzzing: open).
+// declares a negative size or more bytes than the file has left, when a
+// preview image or a string of a string vector is larger than what holds it,
+// and when a part's data window or tile size exceeds --max-image-pixels (or
+// its channels --max-decoded-bytes): OpenEXR sizes its line and tile buffers
+// from them when the file is opened. The walk steps over the bytes OpenEXR
+// reads, not those declared, where the two differ: a channel list is read to
+// its end and the fixed-size types (int, box2i, v3f ...) at their own size.
+// A header this walk cannot follow is left to OpenEXR to report.
 void checkExrAttributeSizes(const std::string& path);
 
 }  // namespace darkroom::io

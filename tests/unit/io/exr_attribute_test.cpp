@@ -97,3 +97,100 @@ TEST(ExrAttributes, AttributeAfterALongNameIsChecked) {
     test::writeText(path, exr);
     EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 87 declares 1996488717"));
 }
+
+// OpenEXR reads a fixed-size type (int, box2i, v3f ...) at its own size
+// whatever size the header declares; the check steps over the same bytes, so
+// an int declaring 0 bytes cannot hide the 2 GB string after it (the case
+// docs/formats.md listed as open).
+TEST(ExrAttributes, AttributeAfterAFixedSizeTypeOfTheWrongSizeIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("after-int.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string("n\0int\0", 6);
+    putLE32(exr, 0);           // wrong: OpenEXR reads 4 bytes
+    putLE32(exr, 0x00000000);  // the int
+    exr += std::string("comments\0string\0", 16);
+    putLE32(exr, 2003763213u);
+    exr += "abc";
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'comments' (string) at byte 22 declares 2003763213"));
+}
+
+namespace {
+
+// A header with one FLOAT channel `Z`, the given data window and, when
+// `tiles` is not 0, a tile description of tiles x tiles.
+std::string exrWithWindow(std::int32_t xMax, std::int32_t yMax, std::uint32_t tiles = 0) {
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, tiles ? 0x202u : 2u);
+    exr += std::string("channels\0chlist\0", 16);
+    putLE32(exr, 19);
+    exr += std::string("Z\0", 2);
+    putLE32(exr, 2);  // FLOAT
+    exr += std::string(4, '\0');
+    putLE32(exr, 1);
+    putLE32(exr, 1);
+    exr += std::string(1, '\0');
+    exr += std::string("compression\0compression\0", 24);
+    putLE32(exr, 1);
+    exr += std::string(1, '\4');  // PIZ
+    exr += std::string("dataWindow\0box2i\0", 17);
+    putLE32(exr, 16);
+    for (std::int32_t v : {0, 0, xMax, yMax}) putLE32(exr, std::uint32_t(v));
+    if (tiles) {
+        exr += std::string("tiles\0tiledesc\0", 15);
+        putLE32(exr, 9);
+        putLE32(exr, tiles);
+        putLE32(exr, tiles);
+        exr += std::string(1, '\0');
+    }
+    exr += std::string(1, '\0');
+    return exr;
+}
+
+}  // namespace
+
+// The data window is checked against --max-image-pixels before OpenEXR opens
+// the file: its InputFile sizes line buffers from the window (the fuzzer's
+// fourth finding: an 867-byte file declaring 4,195,297 x 131,073 pixels made
+// it clear gigabytes for 12 s).
+TEST(ExrAttributes, HugeDataWindowIsRefusedBeforeOpenExr) {
+    test::TempDir dir;
+    const std::string path = dir.file("huge-window.exr");
+    test::writeText(path, exrWithWindow(4195296, 131072));
+    EXPECT_THAT(inputErrorOf(path), HasSubstr(path + ": OpenEXR data window: 4195297 x 131073 pixels exceed the limit"));
+}
+
+TEST(ExrAttributes, HugeTileSizeIsRefusedBeforeOpenExr) {
+    test::TempDir dir;
+    const std::string path = dir.file("huge-tiles.exr");
+    test::writeText(path, exrWithWindow(15, 15, 1u << 20));
+    EXPECT_THAT(inputErrorOf(path), HasSubstr(path + ": OpenEXR tile size: 1048576 x 1048576 pixels exceed the limit"));
+}
+
+TEST(ExrAttributes, PreviewLargerThanTheFileIsRefused) {
+    test::TempDir dir;
+    const std::string path = dir.file("preview.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string("preview\0preview\0", 16);
+    putLE32(exr, 8);
+    putLE32(exr, 30000);
+    putLE32(exr, 30000);
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'preview' (preview) at byte 8 declares 3600000008 bytes"));
+}
+
+TEST(ExrAttributes, StringVectorElementLongerThanItsAttributeIsRefused) {
+    test::TempDir dir;
+    const std::string path = dir.file("stringvector.exr");
+    std::string exr("\x76\x2f\x31\x01", 4);
+    putLE32(exr, 2u);
+    exr += std::string("names\0stringvector\0", 19);
+    putLE32(exr, 8);
+    putLE32(exr, 2000000000u);
+    exr += "abcd";
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'names' (stringvector) at byte 8 holds a string of 2000000000 bytes"));
+}
