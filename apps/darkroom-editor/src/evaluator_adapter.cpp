@@ -33,12 +33,17 @@ std::uint64_t signature(const darkroom::Graph& g, const std::string& name,
 }  // namespace
 
 std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node) {
+    // A stack of our own rather than recursion, which a long chain would
+    // overflow. Callers take signatures in this (topological) order, so
+    // signature()'s recursion stays one level deep.
     std::set<std::string> needed;
-    std::function<void(const std::string&)> collect = [&](const std::string& n) {
-        if (!graph.node(n) || !needed.insert(n).second) return;
-        for (const auto& e : graph.edgesInto(n)) collect(e.from.node);
-    };
-    collect(node);
+    std::vector<std::string> toVisit{node};
+    while (!toVisit.empty()) {
+        std::string n = std::move(toVisit.back());
+        toVisit.pop_back();
+        if (!graph.node(n) || !needed.insert(n).second) continue;
+        for (const auto& e : graph.edgesInto(n)) toVisit.push_back(e.from.node);
+    }
     std::vector<std::string> order;
     try {
         for (const auto& n : graph.topologicalOrder())

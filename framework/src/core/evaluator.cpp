@@ -213,13 +213,17 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
     const std::atomic<bool>& cancel = external ? *external : cancelled_;
 
     // The part of the graph the targets depend on.
+    // Walked with a stack of our own, not by recursion: a chain of a million
+    // nodes would overflow the thread's stack.
     std::set<std::string> needed;
-    std::function<void(const std::string&)> collect = [&](const std::string& n) {
-        if (!needed.insert(n).second) return;
+    std::vector<std::string> toVisit(targets.rbegin(), targets.rend());
+    while (!toVisit.empty()) {
+        std::string n = std::move(toVisit.back());
+        toVisit.pop_back();
+        if (!needed.insert(n).second) continue;
         for (const auto& e : g.edgesInto(n))
-            if (g.node(e.from.node)) collect(e.from.node);
-    };
-    for (const auto& t : targets) collect(t);
+            if (g.node(e.from.node)) toVisit.push_back(e.from.node);
+    }
 
     // Everything is checked before anything runs.
     Diagnostics problems;
@@ -230,11 +234,14 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
 
     // Depth levels: a node runs after everything it reads; nodes of one level
     // are independent and run concurrently.
+    // In topological order every input's level is known before its reader's.
     std::map<std::string, int> level;
-    std::function<int(const std::string&)> depth = [&](const std::string& n) -> int {
-        if (auto it = level.find(n); it != level.end()) return it->second;
+    auto depth = [&](const std::string& n) -> int {
         int d = 0;
-        for (const auto& e : g.edgesInto(n)) d = std::max(d, depth(e.from.node) + 1);
+        for (const auto& e : g.edgesInto(n)) {
+            auto it = level.find(e.from.node);
+            d = std::max(d, (it == level.end() ? 0 : it->second) + 1);
+        }
         return level[n] = d;
     };
     std::vector<std::vector<std::string>> waves;

@@ -91,7 +91,7 @@ Node& Graph::addPlaceholder(const std::string& name, const std::string& type) {
     nodes_.push_back(std::move(n));
     nodeIndex_[name] = nodes_.size() - 1;
     touch(nodes_.back());
-    return nodes_.back();
+    return *handOut(nodes_.size() - 1);
 }
 
 void Graph::removeNode(const std::string& name) {
@@ -123,6 +123,7 @@ void Graph::renameNode(const std::string& from, const std::string& to) {
 }
 
 void Graph::reindex() {
+    handedOut_.clear();
     nodeIndex_.clear();
     edgesFrom_.clear();
     edgesTo_.clear();
@@ -146,7 +147,27 @@ const Node* Graph::findNode(const std::string& name) const {
 
 const Node* Graph::node(const std::string& name) const { return findNode(name); }
 
-Node* Graph::node(const std::string& name) { return const_cast<Node*>(findNode(name)); }
+Node* Graph::node(const std::string& name) {
+    // A miss costs no scan here (a 100,000-node pipeline checks each new name
+    // for uniqueness): renames through handed-out pointers are folded in first.
+    resync();
+    auto it = nodeIndex_.find(name);
+    return it == nodeIndex_.end() ? nullptr : handOut(it->second);
+}
+
+Node* Graph::handOut(std::size_t i) {
+    handedOut_.emplace_back(i, nodes_[i].name);
+    return &nodes_[i];
+}
+
+void Graph::resync() {
+    for (const auto& [i, before] : handedOut_) {
+        if (i >= nodes_.size() || nodes_[i].name == before) continue;
+        if (auto it = nodeIndex_.find(before); it != nodeIndex_.end() && it->second == i) nodeIndex_.erase(it);
+        nodeIndex_[nodes_[i].name] = i;
+    }
+    handedOut_.clear();
+}
 
 const PortList& Graph::ports(const Node& n) const {
     if (n.placeholder) return kNoPorts;

@@ -3,8 +3,11 @@
 // validate; bench/ or docs/performance.md has the timing). Correctness only.
 #include "test_filters.h"
 
+#include <darkroom/framework/evaluator.h>
 #include <darkroom/framework/pipeline.h>
 #include <gtest/gtest.h>
+
+#include <pthread.h>
 
 #include <string>
 
@@ -72,4 +75,48 @@ TEST(GraphScale, IndexFollowsRemovalsAndRenames) {
     // A node renamed through the pointer node() returns is still found.
     g.node("a")->name = "source";
     ASSERT_NE(g.node("source"), nullptr);
+}
+
+// The evaluator walks what a target needs with a stack of its own: it used to
+// recurse once per node, and `darkroom run` of a million-node chain died of a
+// stack overflow (SIGSEGV). Here a 100,000-node chain is evaluated on a
+// thread whose stack (1 MiB) the old recursion overflowed at this depth.
+TEST(GraphScale, ChainDeeperThanTheStackEvaluates) {
+    constexpr int kDeep = 100000;
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    std::string previous = "src";
+    for (int i = 0; i < kDeep; ++i) {
+        const std::string name = "f" + std::to_string(i);
+        g.addNode(name, "TestForward");
+        g.connect({previous, "image"}, {name, "image"});
+        previous = name;
+    }
+    struct Job {
+        const Graph* graph = nullptr;
+        std::string target;
+        float value = -1.0f;
+        std::string error;
+    } job;
+    job.graph = &g;
+    job.target = previous;
+    auto body = [](void* p) -> void* {
+        auto* j = static_cast<Job*>(p);
+        try {
+            Evaluator ev;
+            j->value = ev.evaluateImage(*j->graph, j->target, "image")->hostFloat("value")[0];
+        } catch (const std::exception& e) {
+            j->error = e.what();
+        }
+        return nullptr;
+    };
+    pthread_attr_t attr;
+    ASSERT_EQ(pthread_attr_init(&attr), 0);
+    ASSERT_EQ(pthread_attr_setstacksize(&attr, std::size_t(1) << 20), 0);
+    pthread_t thread;
+    ASSERT_EQ(pthread_create(&thread, &attr, body, &job), 0);
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attr);
+    EXPECT_EQ(job.error, "");
+    EXPECT_FLOAT_EQ(job.value, 1.0f);  // TestSource's default value, forwarded unchanged
 }

@@ -111,6 +111,10 @@ private:
     // readers (the evaluator's workers) may share a graph.
     void reindex();
     const Node* findNode(const std::string& name) const;
+    // Folds renames made through handed-out Node pointers or references into
+    // the index (non-const: readers never change the tables).
+    void resync();
+    Node* handOut(std::size_t i);
     bool closesCycle(const std::string& from, const std::string& to) const;
     const Registry* registry_;
     std::vector<Node> nodes_;
@@ -120,6 +124,9 @@ private:
     // (a 5,000-node chain) rather than quadratic or worse.
     std::unordered_map<std::string, std::size_t> nodeIndex_;
     std::unordered_map<std::string, std::vector<std::size_t>> edgesFrom_, edgesTo_;
+    // Nodes handed out as mutable since the last resync, with the name each
+    // had then: a caller may rename one through the pointer.
+    std::vector<std::pair<std::size_t, std::string>> handedOut_;
     std::uint64_t revision_ = 0;
     std::uint64_t counter_ = 0;
 };
