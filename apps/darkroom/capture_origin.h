@@ -1,7 +1,8 @@
 #pragma once
 // What a capture is made from, recorded in its database so that `capture
 // --resume` refuses to complete it from a changed scene file or other options
-// (docs/capture.md): the scene file's content, the resolution, the cameras,
+// (docs/capture.md): the scene file's content, the mesh and volume files it
+// reads (name, size, modification time), the resolution, the cameras,
 // the channels asked for, the backend, the compression and --half.
 #include <darkroom/framework/cinema/writer.h>
 #include <darkroom/framework/scene/scene_file.h>

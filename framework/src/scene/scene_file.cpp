@@ -58,6 +58,7 @@ public:
         if (root["backend"]) d.backend = text(root["backend"], "backend");
         d.request = channels(root["channels"], *d.scene, root);
         d.cameras = cameras(root["cameras"], *d.scene);
+        d.inputFiles = inputFiles_;
         return d;
     }
 
@@ -186,6 +187,8 @@ private:
                 std::filesystem::path p = text(o["file"], "file");
                 if (p.is_relative()) p = std::filesystem::path(baseDir_) / p;
                 const std::string path = p.lexically_normal().string();
+                if (std::find(inputFiles_.begin(), inputFiles_.end(), path) == inputFiles_.end())
+                    inputFiles_.push_back(path);
                 // Volumes: the chosen representation, or their boundary as ParaView's Surface shows it.
                 std::string ext = p.extension().string();
                 for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
@@ -517,6 +520,7 @@ private:
 
     std::string source_, baseDir_;
     mutable std::map<std::string, std::shared_ptr<VolumeMesh>> volumes_;
+    mutable std::vector<std::string> inputFiles_;
     ProcessGroup* group_ = nullptr;
     mutable bool loadedPieceWise_ = false;  // set by loadParts for the object being loaded
     std::vector<bool> pieceWise_;

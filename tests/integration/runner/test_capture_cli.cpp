@@ -208,6 +208,38 @@ TEST(CaptureCli, ResumeRefusesAChangedSceneNamingTheChange) {
     EXPECT_EQ(folderBytes(db), before);
 }
 
+// The meshes a scene names are part of what --resume compares (by name, size
+// and modification time): a scene file unchanged byte for byte whose mesh was
+// replaced used to resume, mixing the old mesh's products with the new one's.
+TEST(CaptureCli, ResumeRefusesAChangedMeshNamingIt) {
+    test::TempDir dir;
+    const std::string triangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
+    test::writeText(dir.file("mesh.obj"), triangle);
+    // Fixed cameras: nothing but the mesh can tell the two captures apart.
+    test::writeText(dir.file("s.yaml"), "objects:\n  - file: mesh.obj\n"
+                                        "cameras:\n  resolution: [16, 16]\n  list:\n"
+                                        "    - {position: [0, 0, 5], target: [0, 0, 0]}\n"
+                                        "    - {position: [5, 0, 0], target: [0, 0, 0]}\n");
+    const std::string db = dir.file("db.cdb");
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", db}).exitCode, 0);
+    const auto before = folderBytes(db);
+    EXPECT_NE(before.at(".darkroom-database").find("the mesh and volume files the scene reads"), std::string::npos);
+    // Unchanged: resumes, nothing to do.
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume"}).exitCode, 0);
+    EXPECT_EQ(folderBytes(db), before);
+    // The mesh grows by a second triangle inside the first one's bounds (so the
+    // cameras, placed from the bounds, do not move); the scene file is the same.
+    test::writeText(dir.file("mesh.obj"), triangle + "v 0 0 0\nf 1 2 4\n");
+    const auto r = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("cannot resume " + db + ": the mesh and volume files the scene reads changed since the "
+                         "capture began (name, size and time 1 file "),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(folderBytes(db), before);
+    EXPECT_FALSE(fs::exists(db + "/.lock"));
+}
+
 TEST(CaptureCli, OverwriteRemovesOnlyItsOwnFilesAndRefusesAForeignFolder) {
     test::TempDir dir;
     test::writeText(dir.file("s.yaml"), "objects:\n  - generator: isosurface\n    parameters: {resolution: 16}\n"

@@ -33,6 +33,9 @@ struct SceneDescription {
     // for the Spheres node to draw post hoc. Each vertex is a sphere.
     std::vector<SceneObject> pointLists;
     std::vector<std::string> warnings;  // e.g. cells a reader skipped
+    // The mesh and volume files the objects were read from, each once, in
+    // the order first read (`darkroom capture --resume` compares them).
+    std::vector<std::string> inputFiles;
 };
 
 // Parses the scene file and loads every object it names. Throws darkroom::Error
