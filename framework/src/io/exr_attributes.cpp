@@ -65,8 +65,7 @@ void checkPart(const Part& part, const std::string& path) {
         const std::int64_t w = std::int64_t(part.window[2]) - part.window[0] + 1;
         const std::int64_t h = std::int64_t(part.window[3]) - part.window[1] + 1;
         if (w > 0 && h > 0) {  // an empty window is OpenEXR's to report
-            const std::string where = path + ": OpenEXR data window";
-            checkImagePixels(std::uint64_t(w), std::uint64_t(h), where);
+            checkImagePixels(std::uint64_t(w), std::uint64_t(h), path);
             // Overflow-free: both sides are within the pixel limit's range.
             checkBytes(Limit::DecodedBytes, std::uint64_t(w) * std::uint64_t(h) * std::max<std::uint64_t>(part.channels, 1) * 4,
                        path, std::to_string(part.channels) + " channels of " + std::to_string(w) + " x " +
