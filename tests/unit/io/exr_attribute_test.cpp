@@ -22,10 +22,16 @@ void putLE32(std::string& s, std::uint32_t v) {
     for (int b = 0; b < 4; ++b) s += char((v >> (8 * b)) & 0xff);
 }
 
-// Magic, version 2 with `flags`, then one attribute.
-std::string exrWithAttribute(std::uint32_t declared, unsigned flags = 0) {
+// OpenEXR's magic number and version field (2, with `flags`).
+std::string exrStart(std::uint32_t flags = 0) {
     std::string exr("\x76\x2f\x31\x01", 4);
     putLE32(exr, 2u | flags);
+    return exr;
+}
+
+// Magic, version 2 with `flags`, then one attribute.
+std::string exrWithAttribute(std::uint32_t declared, unsigned flags = 0) {
+    std::string exr = exrStart(flags);
     exr += std::string("comments\0string\0", 16);
     putLE32(exr, declared);
     exr += "abc";
@@ -69,8 +75,7 @@ TEST(ExrAttributes, NegativeSizeInAMultiPartHeaderIsRefused) {
 TEST(ExrAttributes, AttributeAfterAChannelListOfTheWrongSizeIsChecked) {
     test::TempDir dir;
     const std::string path = dir.file("after-chlist.exr");
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, 2u);
+    std::string exr = exrStart();
     exr += std::string("channels\0chlist\0", 16);
     putLE32(exr, 2);  // wrong: the list below is 19 bytes
     exr += std::string("R\0", 2) + std::string(16, '\1') + std::string(1, '\0');
@@ -87,8 +92,7 @@ TEST(ExrAttributes, AttributeAfterAChannelListOfTheWrongSizeIsChecked) {
 TEST(ExrAttributes, AttributeAfterALongNameIsChecked) {
     test::TempDir dir;
     const std::string path = dir.file("long-name.exr");
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, 2u);
+    std::string exr = exrStart();
     exr += std::string(66, 'n') + std::string("\0int\0", 5);
     putLE32(exr, 4);
     exr += std::string(4, '\0');
@@ -105,8 +109,7 @@ TEST(ExrAttributes, AttributeAfterALongNameIsChecked) {
 TEST(ExrAttributes, AttributeAfterAFixedSizeTypeOfTheWrongSizeIsChecked) {
     test::TempDir dir;
     const std::string path = dir.file("after-int.exr");
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, 2u);
+    std::string exr = exrStart();
     exr += std::string("n\0int\0", 6);
     putLE32(exr, 0);           // wrong: OpenEXR reads 4 bytes
     putLE32(exr, 0x00000000);  // the int
@@ -122,8 +125,7 @@ namespace {
 // A header with one FLOAT channel `Z`, the given data window and, when
 // `tiles` is not 0, a tile description of tiles x tiles.
 std::string exrWithWindow(std::int32_t xMax, std::int32_t yMax, std::uint32_t tiles = 0) {
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, tiles ? 0x202u : 2u);
+    std::string exr = exrStart(tiles ? 0x200u : 0u);
     exr += std::string("channels\0chlist\0", 16);
     putLE32(exr, 19);
     exr += std::string("Z\0", 2);
@@ -172,8 +174,7 @@ TEST(ExrAttributes, HugeTileSizeIsRefusedBeforeOpenExr) {
 TEST(ExrAttributes, PreviewLargerThanTheFileIsRefused) {
     test::TempDir dir;
     const std::string path = dir.file("preview.exr");
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, 2u);
+    std::string exr = exrStart();
     exr += std::string("preview\0preview\0", 16);
     putLE32(exr, 8);
     putLE32(exr, 30000);
@@ -185,8 +186,7 @@ TEST(ExrAttributes, PreviewLargerThanTheFileIsRefused) {
 TEST(ExrAttributes, StringVectorElementLongerThanItsAttributeIsRefused) {
     test::TempDir dir;
     const std::string path = dir.file("stringvector.exr");
-    std::string exr("\x76\x2f\x31\x01", 4);
-    putLE32(exr, 2u);
+    std::string exr = exrStart();
     exr += std::string("names\0stringvector\0", 19);
     putLE32(exr, 8);
     putLE32(exr, 2000000000u);
