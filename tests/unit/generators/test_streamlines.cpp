@@ -2,6 +2,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/framework/scene/generators.h>
+#include <darkroom/limits.h>
 
 #include <gtest/gtest.h>
 
@@ -101,4 +102,27 @@ TEST(Streamlines, LengthOrStepsBoundTheIntegrationTime) {
 TEST(Streamlines, RadiusIsStoredPerVertex) {
     const SceneObject o = streamlines({{"radius", "0.02"}, {"count", "3"}});
     for (std::size_t i = 0; i < o.vertexCount(); ++i) EXPECT_FLOAT_EQ(o.vertices[i * 4 + 3], 0.02f);
+}
+
+// A million lines of a million steps (10^12 RK4 steps, terabytes of
+// vertices) ran for hours and until memory ran out; the bound is checked
+// before a line is traced, against --max-decoded-bytes (8 GiB by default).
+TEST(Streamlines, WorkBeyondTheDecodedBytesLimitIsRefusedBeforeTracing) {
+    try {
+        streamlines({{"count", "1000000"}, {"steps", "1000000"}});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("generator 'streamlines': parameter 'steps' makes up to 2000001000000 vertices"),
+                  std::string::npos)
+            << what;
+        EXPECT_NE(what.find("--max-decoded-bytes"), std::string::npos) << what;
+    }
+    // The same under a limit the defaults fit: 100 lines of 200 steps both ways, 24 bytes a vertex.
+    const std::uint64_t saved = limit(Limit::DecodedBytes);
+    setLimit(Limit::DecodedBytes, 100 * 401 * 24);
+    EXPECT_NO_THROW(streamlines());
+    setLimit(Limit::DecodedBytes, 100 * 401 * 24 - 1);
+    EXPECT_THROW(streamlines(), Error);
+    setLimit(Limit::DecodedBytes, saved);
 }

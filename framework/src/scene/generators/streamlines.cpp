@@ -4,6 +4,7 @@
 #include "hash_random.h"
 
 #include <darkroom/framework/scene/generators.h>
+#include <darkroom/limits.h>
 
 #include <tbb/parallel_for.h>
 
@@ -78,6 +79,17 @@ StreamlineOptions readStreamlineOptions(GeneratorParams& p) {
     o.direction = p.choice("direction", o.direction, {"forward", "backward", "both"});
     o.seed = std::uint64_t(p.integer("seed", int(o.seed), 0, 2147483647));
     p.finish();
+    // Bounded before a line is traced: a million lines of a million steps
+    // would take 10^12 RK4 steps and as many vertices (24 bytes each: x, y,
+    // z, radius, time, segment index), hours and terabytes.
+    const double vertices = double(o.count) * (double(o.steps) * (o.direction == "both" ? 2.0 : 1.0) + 1.0);
+    const double bytes = vertices * 24.0;
+    const double allowed = double(limit(Limit::DecodedBytes));
+    if (bytes > allowed)
+        p.fail(p.has("steps") ? "steps" : "count",
+               fmt::format("makes up to {:.0f} vertices ({} lines of up to {} steps, {:.3g} bytes), more than "
+                           "{} allows ({} bytes): lower 'count' or 'steps', or raise the limit",
+                           vertices, o.count, o.steps, bytes, limitOption(Limit::DecodedBytes), limit(Limit::DecodedBytes)));
     return o;
 }
 
