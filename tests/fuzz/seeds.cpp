@@ -62,6 +62,11 @@ int main(int argc, char** argv) {
             std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
             exr.insert(8, std::string("comments\0string\0\x8d\x5c\x63\x72" "abc", 23));
             writeBytes(root / "exr" / "lying-attribute", exr);
+            // Found by the EXR harness after the preview check was added: a
+            // preview whose 4 x width x height overflowed 64 bits (UBSan).
+            std::string preview = exr.substr(0, 8) + std::string("preview\0preview\0\x08\0\0\0", 20) +
+                                  std::string("\xff\xff\xff\xff\xff\xff\xff\xff", 8) + exr.substr(8);
+            writeBytes(root / "exr" / "huge-preview", preview);
         }
         // Other formats through the OpenImageIO module. The harness takes the
         // first byte as the extension's index (see harnesses/image.cpp).

@@ -149,9 +149,17 @@ void checkExrAttributeSizes(const std::string& path) {
             // Width and height, then 4 bytes a pixel, allocated as declared.
             std::int32_t w = 0, h = 0;
             if (!readInt32(in, w) || !readInt32(in, h)) return;
-            const std::int64_t bytes = 4 * std::int64_t(std::uint32_t(w)) * std::int64_t(std::uint32_t(h));
-            if (bytes > left - 8) failSize(path, name, type, at, 8 + bytes, left);
-            in.seekg(bytes, std::ios::cur);
+            // OpenEXR reads both as unsigned: up to 2^64 pixels, so compare
+            // without multiplying by 4 (the fuzzer's find: 4 w h overflowed).
+            const std::uint64_t pixels = std::uint64_t(std::uint32_t(w)) * std::uint32_t(h);
+            const std::int64_t room = left - 8;
+            if (room < 0 || pixels > std::uint64_t(room) / 4)
+                throw InputError(path + ": OpenEXR attribute '" + name + "' (preview) at byte " + std::to_string(at) +
+                                 " declares " + std::to_string(std::uint32_t(w)) + " x " +
+                                 std::to_string(std::uint32_t(h)) + " pixels of 4 bytes, but the file has " +
+                                 std::to_string(std::max<std::int64_t>(room, 0)) +
+                                 " bytes left (a truncated or corrupt header)");
+            in.seekg(std::int64_t(pixels) * 4, std::ios::cur);
             continue;
         }
         if (length > left) failSize(path, name, type, at, length, left);

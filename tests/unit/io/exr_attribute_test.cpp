@@ -180,7 +180,18 @@ TEST(ExrAttributes, PreviewLargerThanTheFileIsRefused) {
     putLE32(exr, 30000);
     putLE32(exr, 30000);
     test::writeText(path, exr);
-    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'preview' (preview) at byte 8 declares 3600000008 bytes"));
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("OpenEXR attribute 'preview' (preview) at byte 8 declares 30000 x 30000 "
+                                              "pixels of 4 bytes, but the file has 0 bytes left"));
+    // 4 x width x height no longer overflows (UBSan, the fuzz run after the
+    // preview check was added: 5,867,410,836 x 1,868,852,841).
+    exr = exrStart();
+    exr += std::string("preview\0preview\0", 16);
+    putLE32(exr, 8);
+    putLE32(exr, 0xffffffffu);
+    putLE32(exr, 0xffffffffu);
+    exr += "abcd";
+    test::writeText(path, exr);
+    EXPECT_THAT(inputErrorOf(path), HasSubstr("declares 4294967295 x 4294967295 pixels of 4 bytes"));
 }
 
 TEST(ExrAttributes, StringVectorElementLongerThanItsAttributeIsRefused) {
