@@ -66,10 +66,15 @@ void checkPart(const Part& part, const std::string& path) {
         const std::int64_t h = std::int64_t(part.window[3]) - part.window[1] + 1;
         if (w > 0 && h > 0) {  // an empty window is OpenEXR's to report
             checkImagePixels(std::uint64_t(w), std::uint64_t(h), path);
-            // Overflow-free: both sides are within the pixel limit's range.
-            checkBytes(Limit::DecodedBytes, std::uint64_t(w) * std::uint64_t(h) * std::max<std::uint64_t>(part.channels, 1) * 4,
-                       path, std::to_string(part.channels) + " channels of " + std::to_string(w) + " x " +
-                                 std::to_string(h) + " pixels");
+            // Saturating: a pixel limit raised near 2^64 must not let the
+            // product wrap round to a small number.
+            const std::uint64_t pixels = std::uint64_t(w) * std::uint64_t(h);  // both < 2^32
+            const std::uint64_t perPixel = std::max<std::uint64_t>(part.channels, 1) * 4;
+            const std::uint64_t bytes =
+                pixels > UINT64_MAX / perPixel ? UINT64_MAX : pixels * perPixel;
+            checkBytes(Limit::DecodedBytes, bytes, path,
+                       std::to_string(part.channels) + " channels of " + std::to_string(w) + " x " +
+                           std::to_string(h) + " pixels");
         }
     }
     if (part.hasTiles) checkImagePixels(part.tile[0], part.tile[1], path + ": OpenEXR tile size");
