@@ -1,6 +1,7 @@
 // The capture scene file: YAML in, SceneDescription out. Every problem is a
 // darkroom::InputError at "scene.yaml:line:column" (1-based); reader and
 // generator errors are prefixed with the object that asked for them.
+#include "generator_seam.h"
 #include "object_style.h"
 #include "partition/agreement.h"
 #include "partition/parallel_vtk.h"
@@ -26,6 +27,10 @@
 #include <map>
 #include <memory>
 #include <optional>
+
+namespace darkroom::scene_detail {
+GeneratorParameterFilter generatorParameterFilter = nullptr;
+}  // namespace darkroom::scene_detail
 
 namespace darkroom {
 namespace {
@@ -222,7 +227,9 @@ private:
                     params[kv.first.Scalar()] = v;
                 }
             }
-            return generate(text(o["generator"], "generator"), params);
+            const std::string generator = text(o["generator"], "generator");
+            if (scene_detail::generatorParameterFilter) scene_detail::generatorParameterFilter(generator, params);
+            return generate(generator, params);
         } catch (const Error& e) {
             const YAML::Node at = hasFile ? o["file"] : o["generator"];
             const std::string msg = e.what();
