@@ -58,11 +58,11 @@ std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const 
     // bytes would cost more than many captures.
     Hash files;
     for (const auto& f : scene.inputFiles) {
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(f, ec);
-        const auto time = std::filesystem::last_write_time(f, ec);
+        std::error_code sizeError, timeError;
+        const auto size = std::filesystem::file_size(f, sizeError);
+        const auto time = std::filesystem::last_write_time(f, timeError);
         files.add(f);
-        files.add(fmt::format("{} {}", ec ? 0 : size, ec ? 0 : time.time_since_epoch().count()));
+        files.add(fmt::format("{} {}", sizeError ? 0 : size, timeError ? 0 : time.time_since_epoch().count()));
     }
     std::vector<CinemaOriginItem> origin = {
         {scenePart, "resolution", resolution.empty() ? "none" : resolution, false},

@@ -50,7 +50,8 @@ void addLimitOptions(CLI::App& app) {
     size(Limit::ImagePixels, "Largest image (width x height, in pixels; 256M = 16384 x 16384, the default) a file may "
                              "declare or a node may allocate");
     size(Limit::InputBytes, "Largest input file read whole: pipeline, scene, mesh, CSV, JSON (default 8G)");
-    size(Limit::DecodedBytes, "Largest array decoded or generated from an input: inflated zlib data, .npy/.npz members, EXR channels, streamlines (default 8G)");
+    size(Limit::DecodedBytes, "Largest array decoded or generated from an input: inflated zlib data, .npy/.npz "
+                              "members, EXR channels, streamlines (default 8G)");
     size(Limit::NodeBytes, "Memory one node may allocate for new image planes in one evaluation, e.g. 4G or 512M "
                            "(default: no limit)");
     app.add_option_function<double>(
