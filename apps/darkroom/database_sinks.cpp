@@ -1,5 +1,6 @@
 #include "database_sinks.h"
 
+#include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/csv.h>
 #include <darkroom/framework/cinema/naming.h>
@@ -38,14 +39,43 @@ struct Staged {
     std::vector<CinemaStagedEntry> entries;
 };
 
+// The file that marks a staging folder as Darkroom's: without it, the folder
+// is someone else's and is neither read nor removed.
+constexpr const char* kStagingMarker = ".darkroom-staging";
+
+bool isRankFolderName(const std::string& name) {
+    return name.size() > 5 && name.compare(0, 5, "rank-") == 0 &&
+           std::all_of(name.begin() + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The staging databases: real folders named rank-<k> (never links).
 std::vector<fs::path> stagingDatabases(const fs::path& folder) {
     std::vector<fs::path> parts;
     std::error_code ec;
-    if (!fs::is_directory(folder, ec)) return parts;
+    if (!fs::is_directory(fs::symlink_status(folder, ec))) return parts;
     for (const auto& e : fs::directory_iterator(folder))
-        if (e.is_directory()) parts.push_back(e.path());
+        if (fs::is_directory(e.symlink_status()) && isRankFolderName(e.path().filename().string()))
+            parts.push_back(e.path());
     std::sort(parts.begin(), parts.end());
     return parts;
+}
+
+// A staged file as data.csv names it: a plain file name inside its staging
+// database, a regular file there (not a link). Anything else is refused,
+// so a planted data.csv can never make the merge move a file in from outside.
+fs::path stagedFile(const fs::path& part, const std::string& cell, const fs::path& csv) {
+    const fs::path name(cell);
+    if (cell.empty() || cell == "." || cell == ".." || cell.find('/') != std::string::npos ||
+        cell.find('\0') != std::string::npos || name.filename() != name)
+        throw Error(fmt::format("{}: '{}' is not a file name inside the staging database {}; refusing to adopt it",
+                                csv.string(), cell, part.string()));
+    const fs::path file = part / name;
+    std::error_code ec;
+    const auto st = fs::symlink_status(file, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st))
+        throw Error(fmt::format("{}: '{}' is not a plain file (a link or a folder); refusing to adopt it",
+                                csv.string(), file.string()));
+    return file;
 }
 
 Staged readStaged(const DatabaseSink& sink) {
@@ -77,11 +107,11 @@ Staged readStaged(const DatabaseSink& sink) {
             // Files are renamed into place whole: one that exists is complete.
             std::error_code ec;
             CinemaStagedEntry e;
-            e.product = (part / row[f]).string();
+            e.product = stagedFile(part, row[f], csv).string();
             bool complete = fs::is_regular_file(e.product, ec) && fs::file_size(e.product, ec) > 0;
             for (std::size_t k = f + 1; k < row.size(); ++k) {
-                e.attachments[t.header[k]] = (part / row[k]).string();
-                complete = complete && fs::is_regular_file(part / row[k], ec);
+                e.attachments[t.header[k]] = stagedFile(part, row[k], csv).string();
+                complete = complete && fs::is_regular_file(e.attachments[t.header[k]], ec);
             }
             if (!complete) continue;  // shaded again
             for (std::size_t c = 0; c < f; ++c) e.parameters.emplace(t.header[c], CinemaValue(row[c]));
@@ -148,10 +178,24 @@ auto withFileErrors(F&& f) {
     }
 }
 
+// Whether <database>.staging exists; throws when it exists but Darkroom did
+// not make it (no marker inside): such a folder is never read nor removed.
+bool ownStagingFolder(const DatabaseSink& sink) {
+    const fs::path folder = stagingFolder(sink);
+    std::error_code ec;
+    const auto st = fs::symlink_status(folder, ec);
+    if (!fs::exists(st)) return false;
+    if (!fs::is_directory(st) || !fs::is_regular_file(fs::symlink_status(folder / kStagingMarker, ec)))
+        throw Error(fmt::format("{} exists and Darkroom did not make it (no {} inside); runs over MPI ranks stage "
+                                "their entries there, so move it away (nothing in it was touched)",
+                                folder.string(), kStagingMarker));
+    return true;
+}
+
 void prepare(const DatabaseSink& sink) {
     CinemaWriter::check(sink.database, modeOptions(sink));
     const fs::path folder = stagingFolder(sink);
-    if (!fs::exists(folder)) return;
+    if (!ownStagingFolder(sink)) return;
     // A staging database that is locked is being written by a run now.
     CinemaWriterOptions resume;
     resume.resume = true;
@@ -171,7 +215,7 @@ void prepare(const DatabaseSink& sink) {
 
 void merge(const DatabaseSink& sink) {
     const fs::path folder = stagingFolder(sink);
-    if (!fs::exists(folder)) return;
+    if (!ownStagingFolder(sink)) return;
     Staged staged = readStaged(sink);
     if (!staged.entries.empty()) {
         CinemaWriterOptions o = staged.options;
@@ -217,10 +261,21 @@ std::set<std::string> keptEntries(const DatabaseSink& sink) {
     return kept;
 }
 
+void beginStaging(const DatabaseSink& sink) {
+    const fs::path folder = stagingFolder(sink);
+    if (ownStagingFolder(sink)) return;
+    fs::create_directories(folder);
+    writeFileAtomic((folder / kStagingMarker).string(),
+                    "Darkroom stages the entries of " + sink.database + " here during a run over MPI ranks.\n");
+}
+
 }  // namespace
 
-void prepareDatabase(const DatabaseSink& sink) {
-    withFileErrors([&] { prepare(sink); });
+void prepareDatabase(const DatabaseSink& sink, bool overRanks) {
+    withFileErrors([&] {
+        prepare(sink);
+        if (overRanks) beginStaging(sink);
+    });
 }
 
 void mergeStagedEntries(const DatabaseSink& sink) {

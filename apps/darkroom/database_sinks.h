@@ -39,8 +39,10 @@ std::string label(const DatabaseSink& sink);
 // its first entry, when the database does not suit the node's mode (create:
 // it exists and is not empty); settles what an interrupted run over ranks
 // left staged: create refuses it, overwrite removes it, resume adopts it now.
-// A staging database that another run is writing is refused.
-void prepareDatabase(const DatabaseSink& sink);
+// A staging database that another run is writing is refused, and so is a
+// <database>.staging that Darkroom did not make (no marker inside): it is
+// never read nor removed. `overRanks`: makes the staging folder, marked.
+void prepareDatabase(const DatabaseSink& sink, bool overRanks);
 
 // After every rank has finished, by one process: adopts every staged entry
 // into the database, opened in the node's mode (resume keeps the entries it

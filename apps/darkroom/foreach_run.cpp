@@ -86,30 +86,61 @@ std::string resolvedOutput(const EvaluatorOptions& o, const std::string& path) {
     return (fs::path(base) / p).lexically_normal().string();
 }
 
-// The index: the database's parameter columns, then one file column per
-// output (FILE, or FILE_<node>[_<port>] for several), one row per entry in
-// database order, file names relative to the index's folder.
-void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<OutputPort>& outputs,
-                const std::map<std::size_t, std::vector<std::string>>& filesByRow) {
+// The index's file columns: one per output path of the per-entry sinks and
+// one per database a row-fed sink writes (its product of the entry); FILE
+// alone, or FILE_<node>[_<port>] for several.
+std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
+                                      const std::vector<DatabaseSink>& databases) {
     std::map<std::string, int> portsPerNode;
     for (const auto& o : outputs) ++portsPerNode[o.node];
-    std::string text;
-    const auto parameters = db.parameterColumns();
-    for (auto c : parameters) text += quoteCsvCell(db.columns()[c].name) + ",";
-    for (std::size_t k = 0; k < outputs.size(); ++k) {
-        std::string name = outputs.size() == 1 ? "FILE" : "FILE_" + outputs[k].node;
-        if (outputs.size() > 1 && portsPerNode[outputs[k].node] > 1) name += "_" + outputs[k].port;
-        text += quoteCsvCell(name) + (k + 1 < outputs.size() ? "," : "\n");
-    }
+    const std::size_t count = outputs.size() + databases.size();
+    std::vector<std::string> names;
+    for (const auto& o : outputs)
+        names.push_back(count == 1 ? "FILE" : "FILE_" + o.node + (portsPerNode[o.node] > 1 ? "_" + o.port : ""));
+    for (const auto& d : databases) names.push_back(count == 1 ? "FILE" : "FILE_" + d.node);
+    return names;
+}
+
+// The index: the database's parameter columns, then the file columns, one
+// row per entry in database order, file names relative to the index's folder.
+void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
+                const std::map<std::size_t, std::vector<std::string>>& filesByRow) {
     const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+    std::vector<std::string> cells;
+    const auto line = [&cells]() {
+        std::string text;
+        for (std::size_t k = 0; k < cells.size(); ++k) text += (k ? "," : "") + quoteCsvCell(cells[k]);
+        cells.clear();
+        return text + "\n";
+    };
+    const auto parameters = db.parameterColumns();
+    for (auto c : parameters) cells.push_back(db.columns()[c].name);
+    cells.insert(cells.end(), fileColumns.begin(), fileColumns.end());
+    std::string text = line();
     for (const auto& [row, files] : filesByRow) {
-        for (auto c : parameters) text += quoteCsvCell(db.cell(row, c)) + ",";
-        for (std::size_t k = 0; k < files.size(); ++k)
-            text += quoteCsvCell(fs::absolute(files[k]).lexically_proximate(folder).string()) +
-                    (k + 1 < files.size() ? "," : "\n");
+        for (auto c : parameters) cells.push_back(db.cell(row, c));
+        for (const auto& f : files) cells.push_back(fs::absolute(f).lexically_proximate(folder).string());
+        text += line();
     }
     if (!folder.empty()) fs::create_directories(folder);
     writeFileAtomic(path, text);
+}
+
+// "" when every entry has files of its own; else a message naming the
+// first two entries that would write the same file.
+template <class FilesOf>
+std::string sharedOutputFile(const std::vector<std::size_t>& rows, const FilesOf& filesOf, const CinemaDatabase& db) {
+    std::map<std::string, std::size_t> owner;
+    for (const std::size_t row : rows)
+        for (const auto& f : filesOf(row)) {
+            const auto [it, fresh] = owner.emplace(fs::absolute(f).lexically_normal().string(), row);
+            if (!fresh && it->second != row)
+                return "--foreach: the entries " + db.formatParameters(it->second) + " and " +
+                       db.formatParameters(row) + " would both be written to " + f +
+                       " (in file names every character but letters, digits and . + - becomes ~); "
+                       "nothing was shaded";
+        }
+    return "";
 }
 
 }  // namespace
@@ -165,6 +196,12 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
         return files;
     };
 
+    // Two entries whose parameters give one file name (a/b and a~b both
+    // become a~b) would overwrite each other: refused before any shading.
+    if (const std::string clash = sharedOutputFile(rows, filesOf, db); !clash.empty()) {
+        if (processes().root()) reportError(clash);
+        return kBadInput;
+    }
     // The root decides what a resume keeps, so every process works on the same list.
     std::unique_ptr<EntryScheduler> scheduler = makeEntryScheduler();
     // It also checks the databases against their nodes' modes first, so that
@@ -175,7 +212,7 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
         std::vector<std::set<std::string>> keptByDatabase;
         for (const auto& d : databases) {
             try {
-                prepareDatabase(d);
+                prepareDatabase(d, staging);
                 if (s.resume) keptByDatabase.push_back(entriesKeptByResume(d));
             } catch (const Error& e) {
                 reportError(label(d) + ": " + e.what());
@@ -268,10 +305,15 @@ int runForeach(Graph& g, Evaluator& ev, EvaluatorOptions& o, ProgressBar& bar, c
             for (std::size_t k; in >> k;) shaded[k] = true;
         }
         const std::set<std::size_t> redo(todo.begin(), todo.end());
-        for (std::size_t k = 0; k < rows.size(); ++k)
-            if (shaded[k] || !redo.count(k)) filesByRow[rows[k]] = filesOf(rows[k]);
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            if (!shaded[k] && redo.count(k)) continue;
+            auto files = filesOf(rows[k]);
+            for (const auto& d : databases)
+                files.push_back((fs::path(d.database) / (db.entryName(rows[k]) + "." + d.format)).string());
+            filesByRow[rows[k]] = std::move(files);
+        }
         try {
-            writeIndex(s.index, db, outputs, filesByRow);
+            writeIndex(s.index, db, indexColumns(outputs, databases), filesByRow);
         } catch (const Error& e) {
             reportError(e.what());
             if (failure == kOk) failure = kRuntimeFailure;

@@ -74,7 +74,7 @@ void writeAtomically(const std::string& path, OIIO::ImageOutput& out, const OIIO
     const bool inMemory = encodesInMemory(out);
     std::vector<unsigned char> bytes;
     OIIO::Filesystem::IOVecOutput memory(bytes);
-    const std::string target = inMemory ? path : temporaryPathFor(path);
+    const std::string target = inMemory ? path : createTemporaryFile(path);
     auto oiioFail = [&]() {
         const std::string e = io::oneLine(out.geterror());
         std::error_code ec;

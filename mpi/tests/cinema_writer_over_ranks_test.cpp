@@ -146,6 +146,9 @@ TEST(CinemaWriterOverRanks, AKilledRunsStagedEntriesAreRefusedByCreateAndAdopted
         "out", {"-q", "--where", "theta=40", "--set", "pictures.database=" + b.dir.file("out/shaded.cdb.staging/rank-5"),
                 "--set", "buffers.database=" + b.dir.file("out/buffers.cdb.staging/rank-5")}));
     ASSERT_EQ(stage.exitCode, 0) << stage.err;
+    // The marker with which a run over ranks claims its staging folders.
+    for (const char* folder : {"out/shaded.cdb.staging", "out/buffers.cdb.staging"})
+        writeText(b.dir.file(std::string(folder) + "/.darkroom-staging"), "");
 
     const RunResult refused = runOnRanks(3, b.shade("out"));
     EXPECT_EQ(refused.exitCode, 2) << refused.err;

@@ -71,8 +71,38 @@ std::string temporaryPathFor(const std::string& path) {
     return (p.parent_path() / (p.stem().string() + tag + p.extension().string())).string();
 }
 
+namespace {
+
+// A new file under a fresh temporary name: never one that exists, never
+// through a symbolic link (someone able to write the folder could plant
+// either under the next predictable name).
+int openNewTemporary(const std::string& path, std::string& name) {
+    constexpr int kAttempts = 1000;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        name = temporaryPathFor(path);
+        const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (fd >= 0) return fd;
+        if (errno != EEXIST && errno != ELOOP) failWrite(path, "cannot create a temporary file beside it: ", errno);
+    }
+    failWrite(path, "cannot create a temporary file beside it (every name tried exists): ", EEXIST);
+}
+
+}  // namespace
+
+std::string createTemporaryFile(const std::string& path) {
+    std::string name;
+    const int fd = openNewTemporary(path, name);
+    if (::close(fd) != 0 && errno != EINTR) {
+        const int err = errno;
+        std::remove(name.c_str());
+        failWrite(path, "", err);
+    }
+    return name;
+}
+
 void commitFile(const std::string& temporary, const std::string& path) {
-    const int fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+    // O_NOFOLLOW: a temporary swapped for a link is not synced nor renamed into place.
+    const int fd = ::open(temporary.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
     if (fd < 0) {
         const int err = errno;
         std::remove(temporary.c_str());
@@ -83,9 +113,8 @@ void commitFile(const std::string& temporary, const std::string& path) {
 }
 
 void writeFileAtomic(const std::string& path, std::string_view bytes) {
-    const std::string tmp = temporaryPathFor(path);
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) failWrite(path, "", errno);
+    std::string tmp;
+    const int fd = openNewTemporary(path, tmp);
     std::size_t done = 0;
     while (done < bytes.size()) {
         const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);

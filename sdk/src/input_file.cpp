@@ -24,9 +24,15 @@ const char* kindOf(mode_t mode) {
 }  // namespace
 
 std::uint64_t requireRegularFile(const std::string& path, const std::string& what) {
+    // Opened, not only stat()ed: a file we may not read (permission denied)
+    // is bad input here, as in readInputFile, not a library's failure later.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw InputError("cannot read " + what + " '" + path + "': " + std::strerror(errno));
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        throw InputError("cannot read " + what + " '" + path + "': " + std::strerror(errno));
+    const bool ok = ::fstat(fd, &st) == 0;
+    const int err = errno;
+    ::close(fd);
+    if (!ok) throw InputError("cannot read " + what + " '" + path + "': " + std::strerror(err));
     if (!S_ISREG(st.st_mode))
         throw InputError("cannot read " + what + " '" + path + "': it is " + kindOf(st.st_mode) +
                          "; expected a regular file");

@@ -35,6 +35,11 @@ bool applySet(Graph& g, const std::string& assignment) {
         if (!n) throw Error("no node named '" + node + "' in the pipeline");
         const PortSpec* spec = g.ports(*n).input(port);
         if (!spec) throw Error("node '" + node + "' (" + n->type + ") has no input '" + port + "'");
+        // A value on a connected port would be silently ignored: the edge wins.
+        if (const auto edges = g.edgesInto(node, port); !edges.empty())
+            throw Error("input '" + port + "' of node '" + node + "' is fed by " + edges.front().from.node + "." +
+                        edges.front().from.port + ", so a value set here would be ignored; remove that edge from "
+                        "the pipeline to set it");
         g.setParameter(node, port, parseValue(spec->type, text));
     } catch (const Error& e) {
         reportError("--set '" + assignment + "': " + e.what());

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -40,9 +41,18 @@ std::string listValues(const std::vector<std::string>& values, std::size_t limit
 
 bool sameNumber(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
-// Query values are quoted when they hold what the query syntax uses.
+// A value written bare reads back as itself in both query forms: numbers and
+// plain words, never one that SQL detection would take for a keyword.
+bool isBareQueryValue(const std::string& v) {
+    for (char c : v)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '+' && c != '_') return false;
+    return !CinemaDatabase::looksLikeSql(v);
+}
+
+// Query values are quoted unless bare (isBareQueryValue): text from data is
+// never read as query syntax (a value "'a' OR 1" selects only its own row).
 std::string quoteQueryValue(const std::string& v) {
-    if (v.find_first_of(",=\"") == std::string::npos && trim(v).size() == v.size()) return v;
+    if (isBareQueryValue(v)) return v;
     std::string out = "\"";
     for (char c : v) {
         if (c == '"') out += '"';

@@ -23,6 +23,22 @@ std::string readPid(int fd) {
     return s.empty() ? std::string("unknown") : s;
 }
 
+void refuseUnlessPlainFile(int fd, const std::string& path) {
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        const int err = errno;
+        ::close(fd);
+        throw Error(fmt::format("cannot lock '{}': {}", path, std::strerror(err)));
+    }
+    if (!S_ISREG(st.st_mode) || st.st_nlink != 1) {
+        ::close(fd);
+        throw Error(fmt::format("'{}' is {}, not a lock file Darkroom made; refusing to write it (remove it if no "
+                                "Darkroom process is writing the database)",
+                                path, S_ISREG(st.st_mode) ? "a file with several names (a hard link)"
+                                                          : "not a plain file"));
+    }
+}
+
 }  // namespace
 
 DatabaseLock::DatabaseLock(const std::string& folder) : path_(folder + "/" + kFileName) {
@@ -30,9 +46,17 @@ DatabaseLock::DatabaseLock(const std::string& folder) : path_(folder + "/" + kFi
     // that file just before, our lock is on a dead inode. Retry until the
     // locked file is the one at the path.
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        // Never through a symbolic link, never a file with other names: the
+        // lock file is truncated and written, and a planted link or hard link
+        // would make us overwrite its target.
+        const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+        if (fd < 0 && errno == ELOOP)
+            throw Error(fmt::format("'{}' is a symbolic link, which Darkroom never makes; refusing to follow it "
+                                    "(remove it if no Darkroom process is writing the database)",
+                                    path_));
         if (fd < 0)
             throw Error(fmt::format("cannot create lock file '{}': {}", path_, std::strerror(errno)));
+        refuseUnlessPlainFile(fd, path_);
         if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
             const int err = errno;
             const std::string pid = readPid(fd);

@@ -6,13 +6,16 @@
 // is available without a parser of our own.
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/database.h>
+#include <darkroom/limits.h>
 
 #include <fmt/format.h>
 #include <sqlite3.h>
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 namespace darkroom {
@@ -50,7 +53,47 @@ std::string lower(std::string s) {
 
 }  // namespace
 
-std::vector<std::size_t> CinemaDatabase::query(const std::string& sqlWhere) const {
+namespace {
+
+// What SQLite's progress handler consults: the caller's stop flag and the
+// node time limit, which a query with no end (WITH RECURSIVE ...) would
+// otherwise never reach, as SQLite does not return between steps.
+struct QueryWatch {
+    const std::function<bool()>* stop;
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    std::uint64_t limitMs = limit(Limit::NodeMilliseconds);
+    bool cancelled = false, overTime = false;
+
+    static int check(void* self) {
+        auto& w = *static_cast<QueryWatch*>(self);
+        if (*w.stop && (*w.stop)()) w.cancelled = true;
+        const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - w.start);
+        if (w.limitMs && std::uint64_t(ms.count()) > w.limitMs) w.overTime = true;
+        return w.cancelled || w.overTime;
+    }
+};
+
+// Every step of the query under the watch; a stop becomes Cancelled or the
+// time limit's InputError rather than SQLite's bare "interrupted".
+template <class Fail>
+std::vector<std::size_t> collectRows(sqlite3* db, sqlite3_stmt* sel, const QueryWatch& watch, const Fail& fail) {
+    std::vector<std::size_t> rows;
+    for (;;) {
+        const int rc = sqlite3_step(sel);
+        if (rc == SQLITE_DONE) break;
+        if (rc == SQLITE_INTERRUPT && watch.cancelled) throw Cancelled();
+        if (rc == SQLITE_INTERRUPT && watch.overTime)
+            throw InputError(fail(fmt::format("ran past {} {:g}", limitOption(Limit::NodeMilliseconds),
+                                              double(watch.limitMs) / 1000.0)).what());
+        if (rc != SQLITE_ROW) throw fail(sqlite3_errmsg(db));
+        rows.push_back(std::size_t(sqlite3_column_int64(sel, 0) - 1));
+    }
+    return rows;
+}
+
+}  // namespace
+
+std::vector<std::size_t> CinemaDatabase::query(const std::string& sqlWhere, const std::function<bool()>& stop) const {
     std::string expr(trimmed(sqlWhere));
     if (lower(expr.substr(0, 6)) == "where ") expr = expr.substr(6);
     if (trimmed(expr).empty()) {
@@ -120,6 +163,12 @@ std::vector<std::size_t> CinemaDatabase::query(const std::string& sqlWhere) cons
             throw fail(std::string("cannot load data.csv into SQLite: ") + sqlite3_errmsg(db.get()));
     }
     sqlite3_exec(db.get(), "COMMIT", nullptr, nullptr, nullptr);
+    // No value the expression makes may be much longer than what data.csv
+    // holds (randomblob(2e9) would otherwise allocate it).
+    std::size_t longest = 0;
+    for (std::size_t r = 0; r < rowCount(); ++r)
+        for (std::size_t c = 0; c < columns_.size(); ++c) longest = std::max(longest, cell(r, c).size());
+    sqlite3_limit(db.get(), SQLITE_LIMIT_LENGTH, int(std::min<std::size_t>(std::max<std::size_t>(longest + 1, 16u << 20), 1u << 30)));
 
     const std::string select =
         "SELECT " + rowidName + " FROM input WHERE (" + expr + "\n) ORDER BY " + rowidName;
@@ -133,14 +182,9 @@ std::vector<std::size_t> CinemaDatabase::query(const std::string& sqlWhere) cons
     }
     const Stmt sel(rawSelect);
     if (tail && !trimmed(tail).empty()) throw fail("expected one expression, found more after it");
-    std::vector<std::size_t> rows;
-    for (;;) {
-        const int rc = sqlite3_step(sel.get());
-        if (rc == SQLITE_DONE) break;
-        if (rc != SQLITE_ROW) throw fail(sqlite3_errmsg(db.get()));
-        rows.push_back(std::size_t(sqlite3_column_int64(sel.get(), 0) - 1));
-    }
-    return rows;
+    QueryWatch watch{&stop};
+    sqlite3_progress_handler(db.get(), 4096, &QueryWatch::check, &watch);
+    return collectRows(db.get(), sel.get(), watch, fail);
 }
 
 bool CinemaDatabase::looksLikeSql(std::string_view q) {
@@ -168,8 +212,8 @@ bool CinemaDatabase::looksLikeSql(std::string_view q) {
     return !word.empty() && keyword();
 }
 
-std::vector<std::size_t> CinemaDatabase::selectWhere(const std::string& where) const {
-    return looksLikeSql(where) ? query(where) : select(parseQuery(where));
+std::vector<std::size_t> CinemaDatabase::selectWhere(const std::string& where, const std::function<bool()>& stop) const {
+    return looksLikeSql(where) ? query(where, stop) : select(parseQuery(where));
 }
 
 }  // namespace darkroom

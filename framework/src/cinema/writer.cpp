@@ -416,7 +416,7 @@ void moveFileInto(const fs::path& from, const fs::path& to) {
     std::error_code ec;
     fs::rename(from, to, ec);
     if (ec == std::errc::cross_device_link) {
-        const std::string tmp = temporaryPathFor(to.string());
+        const std::string tmp = createTemporaryFile(to.string());
         fs::copy_file(from, tmp, fs::copy_options::overwrite_existing, ec);
         if (!ec) {
             commitFile(tmp, to.string());

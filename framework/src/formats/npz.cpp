@@ -148,7 +148,7 @@ std::vector<NpyArray> readNpzHeaders(const std::string& path) {
 
 void writeNpz(const std::string& path, const std::vector<NpyArray>& arrays, bool compress) {
     if (arrays.empty()) throw Error(fmt::format("cannot write '{}': an .npz needs at least one array", path));
-    const std::string tmp = temporaryPathFor(path);
+    const std::string tmp = createTemporaryFile(path);
     int code = 0;
     zip_t* z = zip_open(tmp.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &code);
     if (!z) throw Error(fmt::format("cannot write '{}': {}", path, zipErrorText(code)));

@@ -126,3 +126,23 @@ TEST(CinemaWriterRun, OverwriteRefusesAForeignFolderAndKeepsOtherFiles) {
     EXPECT_EQ(test::readText(db + "/notes.txt"), "mine");
     EXPECT_EQ(CinemaDatabase::open(db).rowCount(), 3u);
 }
+
+// M5 (issue 26): with a CinemaWriter as the only per-entry sink, --index
+// lists each entry with its product in the database written, one line each.
+TEST(CinemaWriterRun, TheIndexListsTheProductsOfTheDatabaseWritten) {
+    Shading r;
+    const auto run = r.shade({"--index", r.dir.file("out/index.csv")});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(test::readText(r.dir.file("out/index.csv")),
+              "time,FILE\n1,shaded.cdb/time=1.exr\n2,shaded.cdb/time=2.exr\n3,shaded.cdb/time=3.exr\n");
+}
+
+// L4 (issue 26): --set on an input that an edge feeds would be ignored (the
+// edge wins): refused, naming the edge.
+TEST(CinemaWriterRun, SetOnAnInputFedByAnEdgeIsRefused) {
+    Shading r;
+    const auto run = r.shade({"--set", "write.row=time=7"});
+    EXPECT_EQ(run.exitCode, 2) << run.err;
+    EXPECT_THAT(run.err, HasSubstr("input 'row' of node 'write' is fed by read.row"));
+    EXPECT_FALSE(fs::exists(r.dir.file("out/shaded.cdb")));
+}

@@ -125,7 +125,7 @@ void Movie::execute(Context& ctx) {
     options.preset = ctx.get(preset_);
     const Color background = ctx.get(background_);
 
-    const std::string temporary = temporaryPathFor(target);
+    const std::string temporary = createTemporaryFile(target);
     try {
         std::unique_ptr<movie::H264Writer> writer;
         int width = 0, height = 0;

@@ -12,6 +12,12 @@ namespace darkroom {
 // A unique name in the same directory (so the rename cannot cross file
 // systems), keeping the extension so format-sniffing writers (OIIO) still work.
 DARKROOM_API std::string temporaryPathFor(const std::string& path);
+// Creates a new, empty temporary file beside `path` (a name as temporaryPathFor
+// gives, made with O_CREAT | O_EXCL | O_NOFOLLOW, so a file or a symbolic link
+// planted under a predictable name is never opened, truncated or followed: the
+// next name is tried) and returns its name, for writers that open files
+// themselves (OpenImageIO, FFmpeg, libzip). Throws darkroom::Error naming `path`.
+DARKROOM_API std::string createTemporaryFile(const std::string& path);
 // fsyncs the temporary file, renames it over `path` and fsyncs the folder;
 // every step checked: throws darkroom::Error naming `path` and the errno text
 // (the temporary file removed).

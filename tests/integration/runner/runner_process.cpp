@@ -12,7 +12,26 @@ extern char** environ;
 
 namespace darkroom::test {
 
+namespace {
+
+ProcessResult runWithPrefix(const std::vector<std::string>& prefix, const std::vector<std::string>& args,
+                            const std::vector<std::string>& env);
+
+}  // namespace
+
 ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vector<std::string>& env) {
+    return runWithPrefix({}, args, env);
+}
+
+ProcessResult runDarkroomUnprivileged(const std::vector<std::string>& args) {
+    if (::geteuid() != 0) return runWithPrefix({}, args, {});
+    return runWithPrefix({"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--"}, args, {});
+}
+
+namespace {
+
+ProcessResult runWithPrefix(const std::vector<std::string>& prefix, const std::vector<std::string>& args,
+                            const std::vector<std::string>& env) {
     TempDir dir;
     const std::string outPath = dir.file("out"), errPath = dir.file("err");
     posix_spawn_file_actions_t fa;
@@ -21,7 +40,8 @@ ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vecto
     posix_spawn_file_actions_addopen(&fa, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
 
-    std::vector<std::string> argStore = {DARKROOM_RUNNER};
+    std::vector<std::string> argStore = prefix;
+    argStore.push_back(DARKROOM_RUNNER);
     argStore.insert(argStore.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : argStore) argv.push_back(a.data());
@@ -47,6 +67,8 @@ ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vecto
     r.err = readText(errPath);
     return r;
 }
+
+}  // namespace
 
 int spawnDarkroom(const std::vector<std::string>& args) {
     posix_spawn_file_actions_t fa;

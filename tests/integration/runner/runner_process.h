@@ -15,6 +15,11 @@ struct ProcessResult {
 // a copy of the environment with DARKROOM_PLUGIN_PATH cleared.
 ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
 
+// As runDarkroom, without the power to read or write every file: as user
+// and group 65534 (nobody) through setpriv when the test runs as root, so that
+// permissions apply. Files the runner must reach need to be open to others.
+ProcessResult runDarkroomUnprivileged(const std::vector<std::string>& args);
+
 // Starts the runner without waiting (output discarded); returns its pid.
 int spawnDarkroom(const std::vector<std::string>& args);
 

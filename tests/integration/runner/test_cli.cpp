@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 
 using namespace darkroom;
 using darkroom::test::runDarkroom;
@@ -143,4 +144,72 @@ TEST(RunnerCli, ValidateReportsOk) {
     const auto r = runDarkroom({"validate", c.dir.file("p.yaml")});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("OK (3 nodes, 2 edges, outputs: write)"), std::string::npos) << r.out;
+}
+
+// L4 (issue 26): "Permission denied" exits as every other failure of its
+// kind: a file the runner must read is bad input (2), wherever it is read; a
+// file it cannot write is a runtime failure (1). Run without root's power
+// to read anything (as nobody under setpriv when the test runs as root).
+TEST(RunnerCli, PermissionDeniedExitsByWhetherReadingOrWriting) {
+    ColourMapCase c;
+    namespace fs = std::filesystem;
+    fs::permissions(c.dir.path(), fs::perms::all);
+    const auto run = [&](const std::vector<std::string>& more) {
+        std::vector<std::string> args{"-q", "run", c.dir.file("p.yaml"), "--output", c.dir.file("out")};
+        args.insert(args.end(), more.begin(), more.end());
+        return test::runDarkroomUnprivileged(args);
+    };
+    fs::create_directories(c.dir.file("out"));
+    fs::permissions(c.dir.file("out"), fs::perms::all);
+    const auto ok = run({});
+    ASSERT_EQ(ok.exitCode, 0) << ok.err;
+
+    fs::permissions(c.dir.file("scalar.exr"), fs::perms::none);
+    const auto image = run({});
+    EXPECT_EQ(image.exitCode, 2) << image.err;
+    EXPECT_NE(image.err.find("node 'read' (ImageReader)"), std::string::npos) << image.err;
+    EXPECT_NE(image.err.find("Permission denied"), std::string::npos) << image.err;
+    fs::permissions(c.dir.file("scalar.exr"), fs::perms::owner_read | fs::perms::others_read);
+
+    fs::permissions(c.dir.file("p.yaml"), fs::perms::none);
+    const auto pipeline = run({});
+    EXPECT_EQ(pipeline.exitCode, 2) << pipeline.err;
+    EXPECT_NE(pipeline.err.find("Permission denied"), std::string::npos) << pipeline.err;
+    fs::permissions(c.dir.file("p.yaml"), fs::perms::owner_read | fs::perms::others_read);
+
+    fs::permissions(c.dir.file("out"), fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec);
+    const auto write = run({});
+    EXPECT_EQ(write.exitCode, 1) << write.err;
+    EXPECT_NE(write.err.find("node 'write' (ImageWriter)"), std::string::npos) << write.err;
+    EXPECT_NE(write.err.find("Permission denied"), std::string::npos) << write.err;
+}
+
+// D3 (issue 26): entries whose values differ only in characters a file name
+// cannot keep (a/b, a~b) would share one output file: the run is refused
+// before anything is written, naming both entries.
+TEST(RunnerCli, ForeachRefusesEntriesThatWouldShareAnOutputFile) {
+    ColourMapCase c;
+    namespace fs = std::filesystem;
+    fs::create_directories(c.dir.file("db.cdb"));
+    fs::copy_file(c.dir.file("scalar.exr"), c.dir.file("db.cdb/scalar.exr"));
+    test::writeText(c.dir.file("db.cdb/data.csv"), "label,FILE\nplain,scalar.exr\na/b,scalar.exr\na~b,scalar.exr\n");
+    test::writeText(c.dir.file("each.yaml"), R"(darkroom: 1
+nodes:
+  read: {type: CinemaReader, parameters: {database: db.cdb}}
+  colour: {type: ColorMapping, parameters: {channel: value}}
+  write: {type: ImageWriter, parameters: {path: name.png}}
+edges:
+  - read.image -> colour.image
+  - colour.image -> write.image
+)");
+    const auto r = runDarkroom({"-q", "run", c.dir.file("each.yaml"), "--foreach", "read", "--output",
+                                c.dir.file("out"), "--index", c.dir.file("out/index.csv")});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("label=\"a/b\" and label=\"a~b\" would both be written to"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(c.dir.file("out/name_label=plain.png")));
+    EXPECT_FALSE(fs::exists(c.dir.file("out/index.csv")));
+    const auto one = runDarkroom({"-q", "run", c.dir.file("each.yaml"), "--foreach", "read", "--where",
+                                  "label <> 'a~b'", "--output", c.dir.file("out")});
+    EXPECT_EQ(one.exitCode, 0) << one.err;
+    EXPECT_TRUE(fs::exists(c.dir.file("out/name_label=a~b.png")));
 }

@@ -4,6 +4,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/database.h>
+#include <darkroom/limits.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -125,4 +126,50 @@ TEST(CinemaDescribe, NpzProductsShowMembersShapesAndTheComposableLayers) {
     EXPECT_THAT(text, HasSubstr("layer l001 [object=012]"));
     EXPECT_THAT(text, HasSubstr("Z (from Depth)"));
     EXPECT_THAT(text, HasSubstr("blackbody.json"));
+}
+
+// D2 (issue 26): a row's parameters written as a query select that row and no
+// other, whatever its text holds: quotes, SQL operators and keywords are data.
+TEST(CinemaQuery, FormattedParametersOfAnyTextSelectTheirOwnRow) {
+    test::TempDir dir;
+    const std::vector<std::string> values = {"a",     "'a' OR 1", "it's", "x!=y", "f(1)", "a<b", "and",
+                                             "null",  "R&D",      "say \"hi\"", "a, b=c", " lead", "Or"};
+    std::string csv = "name,FILE\n";
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        std::string quoted = "\"";
+        for (char c : values[k]) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+        csv += quoted + "\",f" + std::to_string(k) + ".png\n";
+    }
+    test::writeText(dir.file("data.csv"), csv);
+    const auto db = CinemaDatabase::open(dir.path());
+    ASSERT_EQ(db.rowCount(), values.size());
+    for (std::size_t r = 0; r < db.rowCount(); ++r) {
+        const std::string q = db.formatParameters(r);
+        EXPECT_FALSE(CinemaDatabase::looksLikeSql(q)) << q;
+        EXPECT_EQ(db.selectWhere(q), std::vector<std::size_t>{r}) << q;
+        EXPECT_EQ(db.find(q).row, r) << q;
+    }
+}
+
+// M4 (issue 26): an expression that never ends (a recursive CTE) stops at
+// --max-node-seconds, naming the option, and when the caller cancels.
+TEST(CinemaQuery, ARecursiveQueryStopsAtTheTimeLimitAndOnCancel) {
+    test::TempDir dir;
+    test::writeText(dir.file("data.csv"), "phi,FILE\n1,a.png\n2,b.png\n");
+    const auto db = CinemaDatabase::open(dir.path());
+    const std::string forever =
+        "phi IN (WITH RECURSIVE n(x) AS (SELECT 1 UNION ALL SELECT x + 1 FROM n) SELECT x FROM n WHERE x < 0)";
+    const std::uint64_t before = limit(Limit::NodeMilliseconds);
+    setLimit(Limit::NodeMilliseconds, 200);
+    try {
+        db.query(forever);
+        ADD_FAILURE() << "a query without end returned";
+    } catch (const InputError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("--max-node-seconds"));
+    }
+    setLimit(Limit::NodeMilliseconds, before);
+    int calls = 0;
+    EXPECT_THROW(db.query(forever, [&] { return ++calls > 10; }), Cancelled);
+    EXPECT_EQ(db.query("phi > 1"), std::vector<std::size_t>{1});
+    EXPECT_THROW(db.query("length(randomblob(100000000)) > 0"), Error);
 }

@@ -7,6 +7,7 @@
 #include "file_size_limit.h"
 #include "test_support.h"
 
+#include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/framework/cinema/writer.h>
 
@@ -182,4 +183,50 @@ TEST(CinemaWriterSafety, AProductWhoseWriteFailsIsNeverListed) {
         EXPECT_THAT(e.path().filename().string(), Not(HasSubstr(".tmp-")));
     w.finish();
     EXPECT_EQ(test::readText(path + "/data.csv"), csv);
+}
+
+// S1 (issue 26): the lock file is written (truncated, then our pid), so a
+// planted symbolic or hard link at DB/.lock must never be opened: its target
+// kept byte for byte, every mode refused with a message naming the link.
+TEST(CinemaWriterSafety, ALockThatIsALinkIsRefusedAndItsTargetKept) {
+    test::TempDir dir;
+    const auto path = dir.file("grid.cdb");
+    writeGrid(path);
+    const auto victim = dir.file("victim.txt");
+    test::writeText(victim, "precious\n");
+    fs::create_symlink(victim, path + "/.lock");
+    CinemaWriterOptions resume;
+    resume.resume = true;
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(path, kColumns, resume); }), HasSubstr("is a symbolic link"));
+    EXPECT_THAT(errorOf([&] { CinemaWriter::check(path, resume); }), HasSubstr("is a symbolic link"));
+    // A create is refused for the database too, and still must not touch the target.
+    (void)errorOf([&] { CinemaWriter w(path, kColumns); });
+    EXPECT_EQ(test::readText(victim), "precious\n");
+    EXPECT_TRUE(fs::is_symlink(path + "/.lock"));
+
+    fs::remove(path + "/.lock");
+    fs::create_hard_link(victim, path + "/.lock");
+    EXPECT_THAT(errorOf([&] { CinemaWriter w(path, kColumns, resume); }), HasSubstr("hard link"));
+    EXPECT_EQ(test::readText(victim), "precious\n");
+}
+
+// S1: temporary files are created exclusively, never through a link planted
+// under the next predictable name; the write still succeeds under another name.
+TEST(CinemaWriterSafety, AtomicWritesNeverFollowAPlantedTemporaryName) {
+    test::TempDir dir;
+    const auto victim = dir.file("victim.txt");
+    test::writeText(victim, "precious\n");
+    const auto target = dir.file("out.csv");
+    // The next names temporaryPathFor will hand out in this process.
+    const std::string probe = temporaryPathFor(target);
+    const std::string prefix = probe.substr(0, probe.rfind('-') + 1);
+    const unsigned next = unsigned(std::stoul(probe.substr(prefix.size()))) + 1;
+    for (unsigned k = next; k < next + 20; ++k) fs::create_symlink(victim, prefix + std::to_string(k) + ".csv");
+    writeFileAtomic(target, "a,b\n1,2\n");
+    EXPECT_EQ(test::readText(target), "a,b\n1,2\n");
+    EXPECT_EQ(test::readText(victim), "precious\n");
+    const std::string reserved = createTemporaryFile(target);
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(reserved)));
+    EXPECT_EQ(fs::file_size(reserved), 0u);
+    EXPECT_EQ(test::readText(victim), "precious\n");
 }

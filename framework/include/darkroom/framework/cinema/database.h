@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -112,13 +113,16 @@ public:
     // empty cells NULL), the others TEXT, column names quoted as written.
     // Unlike find()/select(), values are compared exactly. Throws
     // darkroom::Error with SQLite's message and the query text. Empty = all rows.
-    std::vector<std::size_t> query(const std::string& sqlWhere) const;
+    // An expression that runs forever (a recursive CTE) stops at
+    // --max-node-seconds (InputError naming the option) or when `stop` says
+    // so (darkroom::Cancelled), checked every few thousand SQLite steps.
+    std::vector<std::size_t> query(const std::string& sqlWhere, const std::function<bool()>& stop = {}) const;
     // True when `where` is SQL rather than the simple "name=value, ..." form:
     // it holds < > ! ( ) or a single quote outside "double quotes", or a word
     // AND, OR, NOT, LIKE, IN, BETWEEN, IS, GLOB, NULL.
     static bool looksLikeSql(std::string_view where);
     // query(where) when looksLikeSql(where), else select(parseQuery(where)).
-    std::vector<std::size_t> selectWhere(const std::string& where) const;
+    std::vector<std::size_t> selectWhere(const std::string& where, const std::function<bool()>& stop = {}) const;
 
     // "phi=30, theta=45": the row's parameter (non-FILE) columns as written,
     // such that find(formatParameters(r)) returns a row with the same values.
