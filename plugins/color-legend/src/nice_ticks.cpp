@@ -94,6 +94,36 @@ double heckbertStep(double lo, double hi, int count) {
     return niceNumber(loose, true);
 }
 
+// Heckbert's step, then its nice neighbours (…, 0.1, 0.2, 0.5, 1, 2, …): the
+// one whose ticks inside [lo, hi] come nearest `count` wins (the larger on a
+// tie). Heckbert's loose labelling widens the axis to the ticks; a legend
+// cannot, so a step that leaves two ticks inside is often too coarse. 0 when
+// no step is usable.
+double chooseStep(double lo, double hi, int count) {
+    const double heckbert = heckbertStep(lo, hi, count);
+    double step = 0;
+    long long bestMiss = std::numeric_limits<long long>::max();
+    if (const long long n = insideCount(lo, hi, heckbert); n >= 0) {
+        step = heckbert;
+        bestMiss = std::llabs(n - count);
+    }
+    // Without a finite Heckbert step the range is as wide as doubles go (the
+    // steps near 10^307 decide) or narrower than normal doubles (those near its span).
+    const int e = std::isfinite(heckbert) ? decade(heckbert) : std::isfinite(hi - lo) ? decade(hi - lo) : 307;
+    for (int k = e - 1; k <= e + 1; ++k)
+        for (const double m : {1.0, 2.0, 5.0}) {
+            const double candidate = m * std::pow(10.0, k);
+            const long long n = insideCount(lo, hi, candidate);
+            if (n < 0) continue;
+            const long long miss = std::llabs(n - count);
+            if (miss < bestMiss || (miss == bestMiss && candidate > step)) {
+                bestMiss = miss;
+                step = candidate;
+            }
+        }
+    return step;
+}
+
 }  // namespace
 
 double niceNumber(double x, bool round) {
@@ -138,48 +168,27 @@ std::vector<Tick> linearTicks(double minimum, double maximum, int count) {
         return ticks;
     }
     count = std::clamp(count, 2, 1000);
-    // Heckbert's step, then its nice neighbours (…, 0.1, 0.2, 0.5, 1, 2, …): the
-    // one whose ticks inside the range come nearest `count` wins (the larger on
-    // a tie). Heckbert's loose labelling widens the axis to the ticks; a legend
-    // cannot, so a step that leaves two ticks inside is often too coarse.
-    const double heckbert = heckbertStep(lo, hi, count);
-    double step = 0;
-    long long bestMiss = std::numeric_limits<long long>::max();
-    if (const long long n = insideCount(lo, hi, heckbert); n >= 0) {
-        step = heckbert;
-        bestMiss = std::llabs(n - count);
-    }
-    // Without a finite Heckbert step the range is as wide as doubles go (the
-    // steps near 10^307 decide) or narrower than normal doubles (those near its span).
-    const int e = std::isfinite(heckbert) ? decade(heckbert) : std::isfinite(hi - lo) ? decade(hi - lo) : 307;
-    for (int k = e - 1; k <= e + 1; ++k)
-        for (const double m : {1.0, 2.0, 5.0}) {
-            const double candidate = m * std::pow(10.0, k);
-            const long long n = insideCount(lo, hi, candidate);
-            if (n < 0) continue;
-            const long long miss = std::llabs(n - count);
-            if (miss < bestMiss || (miss == bestMiss && candidate > step)) {
-                bestMiss = miss;
-                step = candidate;
-            }
+    const double step = chooseStep(lo, hi, count);
+    const double eps = step * 1e-9;
+    if (step > 0) {
+        const Multiples multiples = multiplesInside(lo, hi, step);
+        const long long first = (long long)multiples.first, last = (long long)multiples.last;
+        const bool scientific =
+            std::max(std::fabs(double(first) * step), std::fabs(double(last) * step)) >= 1e5 || step < 1e-3;
+        for (long long k = first; k <= last; ++k) {
+            double v = double(k) * step;
+            if (std::fabs(v) < eps) v = 0;  // no "-0"
+            // k × step rounds past an end when the values lie 10^13 steps from zero.
+            if (v < lo - eps || v > hi + eps) continue;
+            ticks.push_back({v, position(v, minimum, maximum), formatTickLabel(v, step, scientific)});
         }
-    if (step == 0) {
+    }
+    if (ticks.empty()) {
         // No round step between two numbers this close (a span below 10^-300,
         // or a few units in the last place of the values): a tick at each end.
         const double span = hi / 2 - lo / 2;
         for (const double v : {lo, hi})
             ticks.push_back({v, position(v, minimum, maximum), formatTickLabel(v, span, true)});
-        return ticks;
-    }
-    const double eps = step * 1e-9;
-    const Multiples multiples = multiplesInside(lo, hi, step);
-    const long long first = (long long)multiples.first, last = (long long)multiples.last;
-    const bool scientific = std::max(std::fabs(double(first) * step), std::fabs(double(last) * step)) >= 1e5 ||
-                            step < 1e-3;
-    for (long long k = first; k <= last; ++k) {
-        double v = double(k) * step;
-        if (std::fabs(v) < eps) v = 0;  // no "-0"
-        ticks.push_back({v, position(v, minimum, maximum), formatTickLabel(v, step, scientific)});
     }
     return ticks;
 }

@@ -103,6 +103,23 @@ TEST(LegendText, EveryFiniteRangeGivesLabelledTicksInsideIt) {
     }
 }
 
+// Found by the fuzz harness (tests/fuzz/harnesses/legend.cpp): ten trillion
+// steps from zero, k × step rounds past the range's end — the last tick of
+// [1e300, 1.0000000000001e300] lay at t = 1.0015, beyond the bar.
+TEST(LegendText, TicksFarFromZeroStayOnTheBar) {
+    for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{
+             {1e300, 1.0000000000001e300}, {-1.0000000000001e300, -1e300}, {1e20, 1e20 + 1e7}}) {
+        for (const int count : {2, 5, 7}) {
+            const auto ticks = linearTicks(lo, hi, count);
+            ASSERT_FALSE(ticks.empty());
+            for (const Tick& t : ticks) {
+                EXPECT_GE(t.t, -1e-9) << lo << " " << count << " " << t.label;
+                EXPECT_LE(t.t, 1 + 1e-9) << lo << " " << count << " " << t.label;
+            }
+        }
+    }
+}
+
 TEST(LegendText, TheNodeDrawsRangesWithNegativeScientificTicks) {
     for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{-0.001, 0.001}, {-2e5, 2e5}, {-1e30, 1e30}}) {
         const auto r = drawLegend({{"minimum", {Value(lo)}}, {"maximum", {Value(hi)}}});
