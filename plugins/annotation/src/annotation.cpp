@@ -1,36 +1,20 @@
 #include "annotation.h"
 
+#include "annotation_text.h"
 #include "text_drawing.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/row.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace darkroom {
 
-std::string Annotation::expand(const std::string& text, const std::string& row) {
-    std::string lines;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == 'n') {
-            lines += '\n';
-            ++i;
-        } else {
-            lines += text[i];
-        }
-    }
-    if (!hasRowPlaceholders(lines)) return fillRowPlaceholders(lines, {}, "text");  // resolves {{ }}
-    if (row.empty())
-        throw Error("the text has placeholders but 'row' is empty; connect CinemaReader's row output (or set row "
-                    "to e.g. 'time=0.5')");
-    return fillRowPlaceholders(lines, parseCinemaRow(row), "text");
-}
-
 void Annotation::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const int w = in->width(), h = in->height();
-    const std::string content = expand(ctx.get(text_), ctx.get(row_));
+    const bool markup = ctx.get(markup_);
+    const std::string content = annotation::expandText(ctx.get(text_), ctx.get(row_), markup);
     if (content.empty()) {
         ctx.set(result_, in);  // nothing to draw: the input itself
         return;
@@ -50,7 +34,6 @@ void Annotation::execute(Context& ctx) {
     const text::Align textAlign = align == Align::Left     ? text::Align::Left
                                   : align == Align::Center ? text::Align::Center
                                                            : text::Align::Right;
-    const bool markup = ctx.get(markup_);
     const text::TextBox box = text::measure(content, font, textAlign, markup);
     const double pad = ctx.get(padding_) * font.sizePx;
     const double boxW = std::ceil(box.width + 2 * pad), boxH = std::ceil(box.height + 2 * pad);

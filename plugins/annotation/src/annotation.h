@@ -18,9 +18,6 @@ public:
     }
     void execute(Context& ctx) override;
 
-    // The text to draw: `\n` pairs as line breaks, placeholders filled from the row.
-    static std::string expand(const std::string& text, const std::string& row);
-
 private:
     ImageIn image_{"image", "Linear colour R, G, B (and A) to draw on", {"R", "G", "B"}};
     StringIn text_{"text", "",

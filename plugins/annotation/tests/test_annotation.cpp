@@ -3,6 +3,7 @@
 // the box, untouched pixels, the row arriving from a CinemaReader in a graph,
 // clear errors.
 #include "annotation.h"
+#include "annotation_text.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
@@ -57,9 +58,15 @@ Ink inkOf(const Buffer& before, const Buffer& after) {
 }  // namespace
 
 TEST(Annotation, ExpandsPlaceholdersAndLineBreaks) {
-    EXPECT_EQ(Annotation::expand("t = {time:.2f} s\\nphi = {phi}°", "time=0.125, phi=30"), "t = 0.12 s\nphi = 30°");
-    EXPECT_EQ(Annotation::expand("no row needed {{here}}", ""), "no row needed {here}");
-    EXPECT_EQ(Annotation::expand("two\nlines", ""), "two\nlines");
+    using annotation::expandText;
+    EXPECT_EQ(expandText("t = {time:.2f} s\\nphi = {phi}°", "time=0.125, phi=30", false), "t = 0.12 s\nphi = 30°");
+    EXPECT_EQ(expandText("no row needed {{here}}", "", false), "no row needed {here}");
+    EXPECT_EQ(expandText("two\nlines", "", false), "two\nlines");
+    EXPECT_EQ(expandText("{{{phi}}} {{x}}", "phi=-30", true), "{-30} {x}");
+    // Markup: values are escaped, the template is not; a value's own "\n" stays as written.
+    EXPECT_EQ(expandText("<i>{a}</i>\\n{b:>6}|{c:.2}", "a=R&D, b=<x>, c=\"'\"\"x\"", true),
+              "<i>R&amp;D</i>\n   &lt;x&gt;|&apos;&quot;");
+    EXPECT_EQ(expandText("{a}", "a=x\\ny", true), "x\\ny");
 }
 
 TEST(Annotation, FilledPlaceholdersDrawExactlyTheTypedText) {

@@ -1,5 +1,8 @@
 #include "color_legend.h"
 
+#include "label_format.h"
+#include "text_limits.h"
+
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
 
@@ -24,22 +27,6 @@ Color tableColor(const std::vector<Color>& table, double t) {
     return {s * a.r + u * b.r, s * a.g + u * b.g, s * a.b + u * b.b, 1.0f};
 }
 
-void relabel(std::vector<legend::Tick>& ticks, const std::string& spec) {
-    // fmt does not reject every unknown presentation type; these are its float ones.
-    const char type = spec.back();
-    if (((type >= 'a' && type <= 'z') || (type >= 'A' && type <= 'Z')) &&
-        std::string_view("aAeEfFgG").find(type) == std::string_view::npos)
-        throw Error("labelFormat '" + spec + "': unknown type '" + std::string(1, type) + "'; expected e.g. .2f, .1e or g");
-    for (auto& t : ticks) {
-        try {
-            t.label = fmt::format(fmt::runtime("{:" + spec + "}"), t.value);
-        } catch (const fmt::format_error& e) {
-            throw Error("labelFormat '" + spec + "' cannot format a number (" + e.what() +
-                        "); expected e.g. .2f, .1e or g");
-        }
-    }
-}
-
 }  // namespace
 
 void ColorLegend::execute(Context& ctx) {
@@ -56,7 +43,7 @@ void ColorLegend::execute(Context& ctx) {
         std::vector<legend::Tick> t;
         if (!finiteRange) return t;
         t = logScale ? legend::logTicks(minimum, maximum, count) : legend::linearTicks(minimum, maximum, count);
-        if (!ctx.get(labelFormat_).empty()) relabel(t, ctx.get(labelFormat_));
+        if (!ctx.get(labelFormat_).empty()) legend::applyLabelFormat(t, ctx.get(labelFormat_));
         return t;
     };
 
@@ -74,6 +61,7 @@ void ColorLegend::execute(Context& ctx) {
     style.title = ctx.get(title_);
     const std::string& units = ctx.get(units_);
     if (!units.empty()) style.title += (style.title.empty() ? "(" : " (") + units + ")";
+    text::checkTextLength(style.title, "the title with its units");
     // Fewer, evenly spaced labels rather than a gap where one would collide:
     // ask for fewer ticks until every label fits.
     std::vector<legend::Tick> ticks = ticksFor(int(ctx.get(ticks_)));

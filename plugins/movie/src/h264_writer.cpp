@@ -25,19 +25,26 @@ std::string averror(int code) {
 }  // namespace
 
 struct H264Writer::Impl {
-    std::string path;
+    std::string path;  // as shown in errors
+    std::string url;   // as opened: "file:" and the absolute path
     AVFormatContext* format = nullptr;
     AVCodecContext* codec = nullptr;
     AVStream* stream = nullptr;
     SwsContext* scale = nullptr;
     AVFrame* frame = nullptr;
     AVPacket* packet = nullptr;
-    bool headerWritten = false, finished = false;
+    bool finished = false;
     int width = 0, height = 0;
     std::int64_t next = 0;
 
     void check(int code, const char* what) const {
         if (code < 0) throw Error("movie " + path + ": " + what + ": " + averror(code));
+    }
+
+    // The muxer buffers its writes and reports a failed one (a full disk, a
+    // file size limit) only through the I/O context's sticky error.
+    void checkWrites(const char* what) const {
+        if (format && format->pb && format->pb->error < 0) check(format->pb->error, what);
     }
 
     // Moves every packet the encoder has ready into the file.
@@ -51,11 +58,14 @@ struct H264Writer::Impl {
             const int w = av_interleaved_write_frame(format, packet);
             av_packet_unref(packet);
             check(w, "writing a frame");
+            checkWrites("writing a frame");
         }
     }
 
+    // A writer destroyed before finish() succeeded was abandoned: its file is
+    // incomplete and the caller removes it. The trailer is never written here
+    // (after a failed av_write_trailer a second call crashed, issue 26).
     ~Impl() {
-        if (format && headerWritten && !finished) av_write_trailer(format);
         if (format && format->pb) avio_closep(&format->pb);
         avformat_free_context(format);
         avcodec_free_context(&codec);
@@ -65,10 +75,13 @@ struct H264Writer::Impl {
     }
 };
 
-H264Writer::H264Writer(const std::string& path, int width, int height, const H264Options& options)
+H264Writer::H264Writer(const std::string& url, const std::string& shownPath, int width, int height,
+                       const H264Options& options)
     : impl_(std::make_unique<Impl>()) {
     Impl& d = *impl_;
-    d.path = path;
+    d.path = shownPath;
+    d.url = url;
+    const std::string& path = shownPath;
     d.width = width;
     d.height = height;
     if (width <= 0 || height <= 0 || width % 2 || height % 2)
@@ -82,7 +95,7 @@ H264Writer::H264Writer(const std::string& path, int width, int height, const H26
     if (!encoder)
         throw Error("this FFmpeg has no H.264 encoder (libx264); Debian's libavcodec59 includes it "
                     "(apt-get install libavcodec59)");
-    d.check(avformat_alloc_output_context2(&d.format, nullptr, "mp4", path.c_str()), "preparing the MP4 container");
+    d.check(avformat_alloc_output_context2(&d.format, nullptr, "mp4", url.c_str()), "preparing the MP4 container");
     d.stream = avformat_new_stream(d.format, nullptr);
     if (!d.stream) throw Error("movie " + path + ": cannot add a video stream");
     d.codec = avcodec_alloc_context3(encoder);
@@ -109,13 +122,13 @@ H264Writer::H264Writer(const std::string& path, int width, int height, const H26
     d.check(avcodec_parameters_from_context(d.stream->codecpar, d.codec), "describing the stream");
     d.stream->time_base = d.codec->time_base;
     d.stream->avg_frame_rate = rate;
-    d.check(avio_open(&d.format->pb, path.c_str(), AVIO_FLAG_WRITE), "opening the file");
+    d.check(avio_open(&d.format->pb, url.c_str(), AVIO_FLAG_WRITE), "opening the file");
     AVDictionary* muxer = nullptr;
     av_dict_set(&muxer, "movflags", "+faststart", 0);
     const int r = avformat_write_header(d.format, &muxer);
     av_dict_free(&muxer);
     d.check(r, "writing the MP4 header");
-    d.headerWritten = true;
+    d.checkWrites("writing the MP4 header");
 
     d.scale = sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, AV_PIX_FMT_YUV420P,
                              SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr);
@@ -152,8 +165,11 @@ void H264Writer::finish() {
     if (d.finished) return;
     d.check(avcodec_send_frame(d.codec, nullptr), "flushing the encoder");
     d.drain();
-    d.check(av_write_trailer(d.format), "writing the MP4 index");
+    // Once only, whatever it returns: the muxer's state after a failed
+    // trailer does not survive a second call.
     d.finished = true;
+    d.check(av_write_trailer(d.format), "writing the MP4 index");
+    d.checkWrites("writing the MP4 index");
     d.check(avio_closep(&d.format->pb), "closing the file");
 }
 

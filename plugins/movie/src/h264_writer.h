@@ -18,11 +18,15 @@ struct H264Options {
 
 class H264Writer {
 public:
-    // Opens `path` for writing (the caller writes to a temporary name and
-    // renames). Width and height must be even and positive. Throws
-    // darkroom::Error naming the file and FFmpeg's reason, or saying that this
-    // FFmpeg has no H.264 encoder.
-    H264Writer(const std::string& path, int width, int height, const H264Options& options);
+    // Opens `url` for writing: a "file:" URL (movie_output.h's fileUrl; the
+    // caller writes to a temporary name and renames). Errors name `shownPath`,
+    // the file the user asked for. Width and height must be even and
+    // positive. Throws darkroom::Error naming the file and FFmpeg's reason, or
+    // saying that this FFmpeg has no H.264 encoder; so do addFrame and finish
+    // when a write fails (a full disk), after which the writer is only to be
+    // destroyed.
+    H264Writer(const std::string& url, const std::string& shownPath, int width, int height,
+               const H264Options& options);
     ~H264Writer();
     H264Writer(const H264Writer&) = delete;
     H264Writer& operator=(const H264Writer&) = delete;

@@ -1,6 +1,7 @@
 #include "movie_node.h"
 
 #include "h264_writer.h"
+#include "movie_output.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
@@ -115,9 +116,11 @@ void Movie::execute(Context& ctx) {
     const std::string file = ctx.get(file_);
     const std::string& out = ctx.getString(path_.name());
     if (out.empty()) throw Error("no movie file given; set 'path', e.g. movie.mp4");
-    const std::string target = ctx.resolveOutputPath(out);
+    const std::string target = movie::resolveMoviePath(ctx, out);
     const fs::path parent = fs::path(target).parent_path();
     if (!parent.empty()) fs::create_directories(parent, ec);
+    for (const std::string& stale : movie::removeStaleTemporaries(target))
+        ctx.warn("removed " + stale + ", left by a run that was stopped while writing this movie");
 
     movie::H264Options options;
     options.frameRate = ctx.get(frameRate_);
@@ -147,7 +150,8 @@ void Movie::execute(Context& ctx) {
             if (!writer) {
                 width = image->width() + image->width() % 2;
                 height = image->height() + image->height() % 2;
-                writer = std::make_unique<movie::H264Writer>(temporary, width, height, options);
+                writer =
+                    std::make_unique<movie::H264Writer>(movie::fileUrl(temporary), target, width, height, options);
             } else if (image->width() + image->width() % 2 != width || image->height() + image->height() % 2 != height) {
                 throw Error(product + " is " + std::to_string(image->width()) + " x " + std::to_string(image->height()) +
                             " but the first frame (" + db.productPath(rows[0], file) + ") is " +

@@ -19,6 +19,14 @@ void tangentRange(double ca, double cz, double r, double& lo, double& hi) {
     hi = (ca * cz + root) / den;
 }
 
+// A continuous pixel bound brought within a few pixels of [0, n] before it
+// becomes an int: through a narrow camera a sphere just in front of the eye
+// has bounds near ±10^10, past any int. NaN (from infinities in the
+// tangents) bounds nothing: `fallback`, the image edge on that side.
+double clampedBound(double v, int n, double fallback) {
+    return std::isnan(v) ? fallback : std::clamp(v, -2.0, double(n) + 2.0);
+}
+
 }  // namespace
 
 bool screenBounds(const Camera& cam, const Sphere& s, double& x0, double& y0, double& x1, double& y1) {
@@ -86,6 +94,10 @@ Hits castSpheres(Context& ctx, const Camera& cam, const std::vector<Sphere>& sph
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         double fx0, fy0, fx1, fy1;
         if (!(spheres[i].radius > 0) || !screenBounds(cam, spheres[i], fx0, fy0, fx1, fy1)) continue;
+        fx0 = clampedBound(fx0, w, -2.0);
+        fy0 = clampedBound(fy0, h, -2.0);
+        fx1 = clampedBound(fx1, w, w + 2.0);
+        fy1 = clampedBound(fy1, h, h + 2.0);
         // Pixels whose centre may fall inside, with one pixel to spare for rounding.
         const Box b{std::max(0, int(std::floor(fx0 - 0.5)) - 1), std::max(0, int(std::floor(fy0 - 0.5)) - 1),
                     std::min(w - 1, int(std::ceil(fx1 - 0.5)) + 1), std::min(h - 1, int(std::ceil(fy1 - 0.5)) + 1)};

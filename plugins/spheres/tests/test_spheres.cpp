@@ -226,6 +226,33 @@ TEST(Spheres, ReadsPlyVerticesAndFindsTheListThroughTheRow) {
     EXPECT_GT(found, 20);
 }
 
+// Issue 26 L1: through a narrow camera a sphere just in front of the eye has
+// pixel bounds near ±10^10, past any int; they overflowed (UBSan) and the
+// sphere that fills the view was dropped.
+TEST(Spheres, ASphereFillingANarrowViewIsDrawn) {
+    test::TempDir dir;
+    Camera c;
+    c.width = 64;
+    c.height = 48;
+    c.position = {0, 0, 0};
+    c.forward = {0, 0, -1};
+    c.up = {0, 1, 0};
+    c.projection = Camera::Projection::Perspective;
+    c.fovYDegrees = 1e-3;  // the scene format's narrowest
+    // Point lists keep radii in single precision: its surface 2^-23 from the eye.
+    const double radius = double(1.9999999f), gap = 2 - radius;
+    test::writeText(dir.file("near.csv"), "x,y,z,radius\n0,0,-2,1.9999999\n");
+    double x0, y0, x1, y1;
+    ASSERT_TRUE(spheres::screenBounds(c, {{0, 0, -2}, radius}, x0, y0, x1, y1));
+    EXPECT_LT(x0, -1e9);  // the case: bounds far outside an int
+    EXPECT_GT(x1, 1e9);
+    const BufferPtr g = drawSpheres(c, dir.file("near.csv")).outputs.at("image").asImage();
+    for (std::size_t i = 0; i < g->pixelCount(); ++i) {
+        ASSERT_EQ(g->hostUInt("pointId")[i], 0u) << i;
+        ASSERT_NEAR(g->hostFloat("Z")[i], gap, 1e-9) << i;
+    }
+}
+
 TEST(Spheres, ErrorsNameTheFileAndWhatWasExpected) {
     test::TempDir dir;
     test::writeText(dir.file("bad.csv"), "a,b,c\n1,2,3\n");

@@ -1,5 +1,7 @@
 #include "text_drawing.h"
 
+#include "text_limits.h"
+
 #include <darkroom/context.h>
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
@@ -30,6 +32,8 @@ using Layout = std::unique_ptr<PangoLayout, LayoutDeleter>;
 // A layout on `cr` with unhinted, greyscale-antialiased glyphs at fractional
 // positions, so text scales exactly with its size.
 Layout makeLayout(cairo_t* cr, const std::string& text, const Font& font, Align align, bool markup) {
+    // The nodes check their text first, naming what made it; this holds for any other caller.
+    checkTextLength(text, "text");
     Layout layout(pango_cairo_create_layout(cr));
     PangoContext* context = pango_layout_get_context(layout.get());
     cairo_font_options_t* options = cairo_font_options_create();

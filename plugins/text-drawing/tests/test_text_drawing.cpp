@@ -2,6 +2,7 @@
 // inside their logical box, the font asked for is the font used, shapes cover
 // exactly their area, and painting blends as 8-bit renderers do.
 #include "text_drawing.h"
+#include "text_limits.h"
 
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
@@ -96,4 +97,26 @@ TEST(TextDrawing, MalformedMarkupIsAClearError) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("not valid Pango markup"), std::string::npos);
     }
+}
+
+// The limits every overlay node shares (text_limits.h, issue 26): format
+// numbers at most 1000, text at most 64 KiB — measure and draw refuse longer
+// text for any caller — and markup escaping of values.
+TEST(TextLimits, FormatNumbersTextLengthAndMarkupEscaping) {
+    EXPECT_NO_THROW(checkFormatSpec(">1000.1000f", "spec"));
+    EXPECT_NO_THROW(checkFormatSpec("9>+08.3e", "spec"));
+    for (const char* spec : {">1001", ".1001f", "0001001", "x^99999999999999999999999999999999"}) {
+        try {
+            checkFormatSpec(spec, "spec");
+            ADD_FAILURE() << spec;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("at most 1000"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_NO_THROW(checkTextLength(std::string(kMaxTextBytes, 'x'), "text"));
+    const std::string tooLong(kMaxTextBytes + 1, 'x');
+    EXPECT_THROW(measure(tooLong, Font{}), InputError);
+    Mask mask(10, 10);
+    EXPECT_THROW(mask.text(0, 0, tooLong, Font{}), InputError);
+    EXPECT_EQ(escapeMarkup("R&D <b>'x'\"y\"</b> é"), "R&amp;D &lt;b&gt;&apos;x&apos;&quot;y&quot;&lt;/b&gt; é");
 }

@@ -5,6 +5,8 @@
 // libFuzzer's -malloc_limit_mb is a finding.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 
@@ -22,5 +24,13 @@ std::string writeInput(const std::uint8_t* data, std::size_t size, const std::st
 
 // This process's folder (created on first use).
 const std::string& scratchFolder();
+
+// A property the code under test promises (beyond not crashing): when it does
+// not hold, the input is a finding like a crash.
+inline void expect(bool holds, const char* property) {
+    if (holds) return;
+    std::fprintf(stderr, "fuzz harness: property broken: %s\n", property);
+    std::abort();
+}
 
 }  // namespace fuzz
