@@ -14,7 +14,7 @@ function(darkroom_add_gtest NAME)
   endif()
   cmake_parse_arguments(ARG "" "LABEL" "SOURCES;LIBRARIES;DEPENDS" ${ARGN})
   add_executable(${NAME} ${ARG_SOURCES})
-  target_link_libraries(${NAME} PRIVATE darkroom_framework darkroom_testsupport GTest::gtest_main GTest::gmock ${ARG_LIBRARIES})
+  target_link_libraries(${NAME} PRIVATE darkroom_testsupport GTest::gtest_main GTest::gmock ${ARG_LIBRARIES})
   target_compile_definitions(${NAME} PRIVATE
     DARKROOM_TEST_PLUGIN_DIR="${DARKROOM_PLUGIN_OUTPUT_DIRECTORY}"
     DARKROOM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"

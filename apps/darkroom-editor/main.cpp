@@ -4,7 +4,7 @@
 #include "document.h"
 #include "main_window.h"
 
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <QApplication>
 #include <QMessageBox>

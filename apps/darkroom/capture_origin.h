@@ -4,8 +4,8 @@
 // (docs/capture.md): the scene file's content, the mesh and volume files it
 // reads (name, size, modification time), the resolution, the cameras,
 // the channels asked for, the backend, the compression and --half.
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <string>
 #include <vector>

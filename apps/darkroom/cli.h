@@ -1,8 +1,8 @@
 #pragma once
 // Shared plumbing of the runner's subcommands: exit codes, error printing,
 // the plugin registry built from the search path.
-#include <darkroom/framework/diagnostics.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/diagnostics.h>
+#include <darkroom/core/registry.h>
 
 #include <string>
 #include <vector>

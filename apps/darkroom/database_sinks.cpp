@@ -2,9 +2,9 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/csv.h>
-#include <darkroom/framework/cinema/naming.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/naming.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -7,7 +7,7 @@
 // database one process writes, byte for byte (docs/scale-out.md, "Batch
 // shading"). The staging folder lies beside the database, so its products
 // are renamed, not copied, into place.
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 
 #include <set>
 #include <string>

@@ -7,8 +7,8 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/csv.h>
-#include <darkroom/framework/cinema/database.h>
+#include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/database.h>
 
 #include <algorithm>
 #include <cstdio>

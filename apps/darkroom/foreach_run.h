@@ -10,7 +10,7 @@
 // rank and merged by rank 0 (database_sinks.h).
 #include "progress_bar.h"
 
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 
 #include <functional>
 #include <string>

@@ -7,9 +7,9 @@
 
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/scene_partition.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/scene_partition.h>
 #include <darkroom/mpi/distributed_capture.h>
 #include <darkroom/mpi/mpi_process_group.h>
 

@@ -2,7 +2,7 @@
 // `darkroom run --profile`: one table per evaluation on stderr, a row per node
 // in the order they finished: its time, whether it ran or came from the cache,
 // and the bytes of new planes it allocated.
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // darkroom-plugin-probe FILE: loads a Darkroom plugin the way the host does
 // (dlopen, ABI check, registration into a throw-away registrar) and says how
 // it went. The host runs it for every new or changed plugin file before
-// loading the file itself (framework/src/core/plugin_scan.cpp).
+// loading the file itself (framework/core/src/plugin_scan.cpp).
 //
 // Output: one line "ok" on stdout when everything succeeded, else one line
 // "refused: <reason>". A plugin that exits, crashes or hangs while loading

@@ -7,9 +7,9 @@
 
 #include <darkroom/buffer.h>
 #include <darkroom/colormap.h>
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/reference.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/accuracy/reference.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // geometry, bilinear upsampling of one channel, and side-by-side failure
 // panels. Header-only so the sweeps stay one file each.
 #include <darkroom/buffer.h>
-#include <darkroom/framework/metrics.h>
+#include <darkroom/accuracy/metrics.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 
 #include <algorithm>
 #include <chrono>

@@ -6,7 +6,7 @@
 #include <darkroom/buffer.h>
 #include <darkroom/capture_backend.h>
 #include <darkroom/context.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 #include <darkroom/value.h>
 
 #include <fstream>

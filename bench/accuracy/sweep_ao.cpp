@@ -8,9 +8,9 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/reference.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/accuracy/reference.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <algorithm>
 #include <chrono>

@@ -18,7 +18,7 @@
 // The aperture used is written as metric "aperture" of method "reference".
 #include "aa_common.h"
 
-#include <darkroom/framework/metrics.h>
+#include <darkroom/accuracy/metrics.h>
 
 #include <algorithm>
 #include <cmath>

@@ -10,9 +10,9 @@
 #include "ao_common.h"
 #include "harness.h"
 
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/reference.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/accuracy/reference.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <algorithm>
 #include <cmath>

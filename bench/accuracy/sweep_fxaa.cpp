@@ -11,7 +11,7 @@
 //   "reference"      time only: the 16 x 16 (8 x 8 quick) reference itself
 #include "aa_common.h"
 
-#include <darkroom/framework/metrics.h>
+#include <darkroom/accuracy/metrics.h>
 
 #include <algorithm>
 #include <iostream>

@@ -6,8 +6,8 @@
 #include "ao_common.h"
 #include "harness.h"
 
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <cmath>
 #include <iostream>

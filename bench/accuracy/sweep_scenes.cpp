@@ -3,7 +3,7 @@
 // docs can show what each chart was measured on.
 #include "harness.h"
 
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <cmath>
 #include <iostream>

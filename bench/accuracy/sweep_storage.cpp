@@ -9,10 +9,10 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/scene/generators.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/scene/generators.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <algorithm>
 #include <chrono>

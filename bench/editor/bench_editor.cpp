@@ -17,9 +17,9 @@
 #include "param_widget.h"
 #include "render_view.h"
 
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/pipeline.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/pipeline.h>
+#include <darkroom/core/registry.h>
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -9,9 +9,9 @@
 //
 //   bench_edits [SIZE] [REPETITIONS]      (markdown on stdout)
 #include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/pipeline.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/pipeline.h>
+#include <darkroom/core/registry.h>
 
 #include <sys/resource.h>
 #include <sys/wait.h>

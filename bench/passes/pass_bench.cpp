@@ -1,7 +1,7 @@
 #include "pass_bench.h"
 
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 
 #include <algorithm>
 #include <chrono>

@@ -9,9 +9,9 @@
 // Prints one RESULT line per setting: "RESULT ssao_ms <setting>=<ms>".
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/mesh_readers.h>
 
 #include <algorithm>
 #include <chrono>

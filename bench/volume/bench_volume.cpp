@@ -2,7 +2,7 @@
 // the median of --reps runs each, and prints RESULT lines that
 // run_volume_bench.sh compares with VTK's readers and filters (vtk_volume_peer.py).
 //   bench_volume FILE.vtu|FILE.vti --field NAME --value V [--reps N]
-#include <darkroom/framework/scene/volume.h>
+#include <darkroom/scene/volume.h>
 
 #include <algorithm>
 #include <chrono>

@@ -3,9 +3,9 @@
 #include "embree_backend.h"
 #include "embree_scene.h"
 
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <cmath>
 #include <sstream>

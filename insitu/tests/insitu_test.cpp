@@ -5,7 +5,7 @@
 #include "test_support.h"
 #include "vtk_test_files.h"
 
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 #include <darkroom/insitu.h>
 
 #include <gtest/gtest.h>

@@ -9,8 +9,8 @@
 #include "small_database.h"
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <gtest/gtest.h>
 

@@ -3,12 +3,12 @@
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
 #include "io/exr_file.h"
-#include "../../framework/oiio/module.h"
+#include "../../framework/data/oiio/module.h"
 
 #include <darkroom/buffer.h>
-#include <darkroom/framework/formats/npy.h>
-#include <darkroom/framework/formats/vti.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/formats/npy.h>
+#include <darkroom/data/formats/vti.h>
+#include <darkroom/data/image_io.h>
 
 #include <filesystem>
 #include <fstream>
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
             io::writeExr(*gbuffer, (root / "exr" / (std::string(compression) + ".exr")).string(), o);
         }
         // Found by the EXR harness: a string attribute declaring 1.9 GB
-        // (framework/src/io/exr_attributes.h); kept as a seed.
+        // (framework/data/src/io/exr_attributes.h); kept as a seed.
         {
             std::ifstream in(root / "exr" / "none.exr", std::ios::binary);
             std::string exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
             fs::remove(tmp);
         }
         // Found by the image harness: a tEXt chunk declaring 1.9 GB in a
-        // 200-byte PNG (framework/oiio/png_chunks.h); kept as a seed.
+        // 200-byte PNG (framework/data/oiio/png_chunks.h); kept as a seed.
         {
             std::ifstream in(root / "image" / "png", std::ios::binary);
             std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

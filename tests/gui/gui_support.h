@@ -1,7 +1,7 @@
 #pragma once
 // Helpers shared by the GUI test executables: the build's plugins, settings
 // kept out of the user's, waiting for the live evaluation, screenshots.
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <QPoint>
 #include <QString>

@@ -15,7 +15,7 @@
 #include "render_view.h"
 #include "test_support.h"
 
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 
 #include <QDir>
 #include <QLineEdit>

@@ -10,13 +10,13 @@
 #include "render_view.h"
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/graph.h>
-#include <darkroom/framework/formats/npy.h>
-#include <darkroom/framework/formats/vti.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/graph.h>
+#include <darkroom/data/formats/npy.h>
+#include <darkroom/data/formats/vti.h>
+#include <darkroom/data/image_io.h>
 
 #include <QDir>
 #include <QListWidget>

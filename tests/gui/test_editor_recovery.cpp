@@ -8,7 +8,7 @@
 #include "main_window.h"
 #include "test_support.h"
 
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/pipeline.h>
 
 #include <QFile>
 #include <QProcess>

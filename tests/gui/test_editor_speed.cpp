@@ -16,8 +16,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/data/image_io.h>
 
 #include <QSlider>
 #include <QStyleOptionSlider>

@@ -2,7 +2,7 @@
 // Helpers shared by the test executables: the build's plugins, temporary
 // folders and small synthetic images made in code (no binary fixtures).
 #include <darkroom/buffer.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <functional>
 #include <string>

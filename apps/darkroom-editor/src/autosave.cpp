@@ -3,7 +3,7 @@
 #include "document.h"
 
 #include <darkroom/atomic_file.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/pipeline.h>
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -4,9 +4,9 @@
 
 #include <darkroom/error.h>
 #include <darkroom/filter.h>
-#include <darkroom/framework/cinema/composable.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/cinema/composable.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 
 namespace editor {
 

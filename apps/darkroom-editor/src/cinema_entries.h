@@ -5,7 +5,7 @@
 // composable image sets) gets a thumbnail, and the thumbnail shows exactly
 // what the node will output for that entry.
 #include <darkroom/buffer.h>
-#include <darkroom/framework/cinema/database.h>
+#include <darkroom/data/cinema/database.h>
 
 #include <QImage>
 #include <QString>

@@ -1,7 +1,7 @@
 #include "cinema_panel.h"
 
-#include <darkroom/framework/cinema/composable.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/data/cinema/composable.h>
+#include <darkroom/core/registry.h>
 
 #include <QApplication>
 #include <QComboBox>

@@ -6,7 +6,7 @@
 // and arrive as they are ready; opening another database drops the rest.
 #include "cinema_entries.h"
 
-#include <darkroom/framework/cinema/database.h>
+#include <darkroom/data/cinema/database.h>
 
 #include <QWidget>
 

@@ -3,7 +3,7 @@
 #include "layout.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/pipeline.h>
 
 #include <QFileInfo>
 #include <QUndoCommand>

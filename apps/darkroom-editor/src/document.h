@@ -3,7 +3,7 @@
 // goes through edit(), which applies a function to a copy of the graph and
 // pushes a command holding the graph before and after. Copies keep node
 // versions, so undo re-runs only the nodes the undone edit touched.
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <QObject>
 #include <QString>

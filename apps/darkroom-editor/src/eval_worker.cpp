@@ -3,7 +3,7 @@
 #include "preview_graph.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 
 namespace editor {
 

@@ -7,7 +7,7 @@
 // it lands would starve a continuous drag of frames.
 #include "evaluator_adapter.h"
 
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <QObject>
 #include <QString>

@@ -1,7 +1,7 @@
 #include "evaluator_adapter.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 
 #include <chrono>
 #include <functional>

@@ -7,7 +7,7 @@
 // replaces the one there.
 #include <QGraphicsScene>
 
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <map>
 #include <optional>

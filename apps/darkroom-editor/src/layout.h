@@ -1,7 +1,7 @@
 #pragma once
 // Node positions live in the node's extras as `ui: {position: [x, y]}`, the
 // one key the editor owns, so they round-trip through the runner's YAML.
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <QPointF>
 

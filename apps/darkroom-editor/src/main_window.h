@@ -5,8 +5,8 @@
 // Cinema browser appears on the right when a database is opened, and the
 // log is a tab beside the graph. Window and dock layout are remembered
 // (QSettings). Every edit is evaluated live (evaluation.h).
-#include <darkroom/framework/diagnostics.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/diagnostics.h>
+#include <darkroom/core/registry.h>
 
 #include <QMainWindow>
 

@@ -12,7 +12,7 @@
 #include "palette.h"
 #include "render_view.h"
 
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 #include <darkroom/srgb.h>
 
 #include <QAction>

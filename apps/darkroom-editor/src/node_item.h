@@ -3,7 +3,7 @@
 // outputs on the right, the value widget of each unconnected value input,
 // and above it a badge with the time of its last run (green: it ran for the
 // frame on screen; grey: its result came from the cache).
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <QGraphicsEllipseItem>
 #include <QGraphicsObject>

@@ -2,7 +2,7 @@
 // Every registered filter type grouped by category, with a search box:
 // typing filters the list, Enter adds the first match, double-click adds
 // the one clicked.
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <QWidget>
 

@@ -10,7 +10,7 @@
 //    the camera travels with the buffer and Resize updates its resolution.
 // Sizes given in pixels (blur half-widths, outline widths) cover more of the
 // picture in a preview; the settled frame at full resolution is exact.
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 
 #include <string>
 

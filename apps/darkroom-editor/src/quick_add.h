@@ -3,7 +3,7 @@
 // field over every registered node type (as in Nuke, Houdini or Blender's
 // Shift+A search). Typing filters by type or category, Up/Down choose,
 // Enter adds, Escape or a click elsewhere closes.
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <QFrame>
 

@@ -6,11 +6,11 @@
 
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/point_list.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/point_list.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

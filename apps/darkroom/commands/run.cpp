@@ -5,8 +5,8 @@
 #include "progress_bar.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/pipeline.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

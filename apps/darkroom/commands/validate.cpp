@@ -1,6 +1,6 @@
 #include "commands.h"
 
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/pipeline.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

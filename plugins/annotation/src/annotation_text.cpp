@@ -3,7 +3,7 @@
 #include "text_limits.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/row.h>
+#include <darkroom/data/cinema/row.h>
 
 namespace darkroom::annotation {
 

@@ -9,7 +9,7 @@
 namespace darkroom::annotation {
 
 // The text to draw. Placeholders follow fillRowPlaceholders
-// (darkroom/framework/cinema/row.h): {column}, {column:spec}, {{ and }}. With
+// (darkroom/data/cinema/row.h): {column}, {column:spec}, {{ and }}. With
 // `markup`, each value substituted from the row is escaped (& < > ' " as
 // entities) so that data is shown as text while the template keeps its own
 // markup. Throws darkroom::Error for the row's and the placeholders' errors, a

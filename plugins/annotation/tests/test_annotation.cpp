@@ -7,10 +7,10 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/graph.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/graph.h>
+#include <darkroom/core/run_filter.h>
 #include <darkroom/srgb.h>
 
 #include <gmock/gmock.h>

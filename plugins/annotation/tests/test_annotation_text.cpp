@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/run_filter.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 #pragma once
 // Drives the registered "embree" backend outside any graph.
 #include <darkroom/capture_backend.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
 #include "test_support.h"

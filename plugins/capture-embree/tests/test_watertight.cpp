@@ -4,8 +4,8 @@
 // mode makes the ray-triangle test watertight.
 #include "render_helpers.h"
 
-#include <darkroom/framework/scene/generators.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/generators.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "capture_filter.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <sstream>
 

@@ -1,7 +1,7 @@
 // The `Capture` node: renders a scene file's camera through a registered
 // backend inside a pipeline, with overrides, and reports bad input clearly.
 #include <darkroom/error.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
 #include "test_support.h"

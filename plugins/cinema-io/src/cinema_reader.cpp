@@ -1,10 +1,10 @@
 #include "cinema_reader.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/composable.h>
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/product.h>
-#include <darkroom/framework/cinema/row.h>
+#include <darkroom/data/cinema/composable.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/product.h>
+#include <darkroom/data/cinema/row.h>
 
 #include <filesystem>
 

@@ -1,9 +1,9 @@
 #include "cinema_writer_node.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/row.h>
-#include <darkroom/framework/cinema/csv.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/row.h>
+#include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <filesystem>
 #include <set>

@@ -5,12 +5,12 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/graph.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/graph.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/run_filter.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 #include "../../../tests/integration/runner/runner_process.h"
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

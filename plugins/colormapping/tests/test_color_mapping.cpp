@@ -4,7 +4,7 @@
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/run_filter.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 #include "test_support.h"
 
 #include <darkroom/capture_backend.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/generators.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/generators.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Running the registered FXAA filter on small images made in code.
 #include "test_support.h"
 
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/run_filter.h>
 
 #include <cmath>
 #include <limits>

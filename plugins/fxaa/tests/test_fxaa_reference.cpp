@@ -4,9 +4,9 @@
 #include "fxaa_helpers.h"
 
 #include <darkroom/capture_backend.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/scene/generators.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/scene/generators.h>
+#include <darkroom/scene/scene_file.h>
 #include <darkroom/srgb.h>
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 
 namespace darkroom {
 

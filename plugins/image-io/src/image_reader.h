@@ -3,7 +3,7 @@
 
 namespace darkroom {
 
-// Source node: one image file -> a buffer (see framework/image_io.h for what
+// Source node: one image file -> a buffer (see darkroom/data/image_io.h for what
 // each format becomes).
 class ImageReader final : public Filter {
 public:

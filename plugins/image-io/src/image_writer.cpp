@@ -1,7 +1,7 @@
 #include "image_writer.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 
 #include <filesystem>
 

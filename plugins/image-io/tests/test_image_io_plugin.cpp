@@ -2,8 +2,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/run_filter.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

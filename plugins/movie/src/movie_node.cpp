@@ -5,8 +5,8 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/product.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/product.h>
 #include <darkroom/srgb.h>
 
 #include <algorithm>

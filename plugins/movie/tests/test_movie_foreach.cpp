@@ -7,9 +7,9 @@
 #include "decoded_movie.h"
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/data/image_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 
 #include <darkroom/buffer.h>
 #include <darkroom/camera.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/run_filter.h>
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "depth_scenes.h"
 
 #include <darkroom/capture_backend.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <gtest/gtest.h>
 

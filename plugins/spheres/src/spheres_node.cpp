@@ -3,8 +3,8 @@
 #include "sphere_raster.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/row.h>
-#include <darkroom/framework/scene/point_list.h>
+#include <darkroom/data/cinema/row.h>
+#include <darkroom/scene/point_list.h>
 #include <darkroom/view_geometry.h>
 
 #include <cmath>

@@ -5,11 +5,11 @@
 #include "../../../tests/integration/runner/runner_process.h"
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/graph.h>
-#include <darkroom/framework/scene/generators.h>
-#include <darkroom/framework/scene/point_list.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/graph.h>
+#include <darkroom/scene/generators.h>
+#include <darkroom/scene/point_list.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

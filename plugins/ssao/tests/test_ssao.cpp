@@ -5,9 +5,9 @@
 
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/generators.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/generators.h>
 
 #include <gmock/gmock.h>
 #include <hwy/targets.h>

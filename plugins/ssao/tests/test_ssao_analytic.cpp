@@ -3,8 +3,8 @@
 // computed here by quadrature over the hemisphere.
 #include "analytic_scenes.h"
 
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/core/registry.h>
 
 #include <gtest/gtest.h>
 

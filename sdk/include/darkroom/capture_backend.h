@@ -61,7 +61,7 @@ public:
     virtual BufferPtr render(const Camera& camera, const CaptureRequest& request, Context& ctx) = 0;
 
     // Reference queries, for ray-traced ground truth (ambient occlusion, thin
-    // lens depth of field, supersampling; see framework/reference.h). A
+    // lens depth of field, supersampling; see darkroom/accuracy/reference.h). A
     // backend that cannot answer them keeps these defaults, which throw
     // darkroom::Error.
     //

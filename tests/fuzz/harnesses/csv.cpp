@@ -3,8 +3,8 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/csv.h>
-#include <darkroom/framework/cinema/database.h>
+#include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/database.h>
 
 #include <filesystem>
 

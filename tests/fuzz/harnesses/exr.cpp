@@ -1,4 +1,4 @@
-// The framework's native OpenEXR reader (framework/src/io/exr_file.cpp):
+// The framework's native OpenEXR reader (framework/data/src/io/exr_file.cpp):
 // header only (darkroom info), then pixels. OpenEXR itself is not
 // instrumented; what is checked is Darkroom's use of it.
 #include "harness.h"

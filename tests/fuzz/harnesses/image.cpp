@@ -1,5 +1,5 @@
 // Every other image format, through the OpenImageIO module's reader
-// (framework/oiio/oiio_read.cpp). OpenImageIO picks the format from the file
+// (framework/data/oiio/oiio_read.cpp). OpenImageIO picks the format from the file
 // name, so the first byte of the input chooses the extension (its low bits)
 // and the entry point (its high bit: the header only, or the whole image) and
 // the rest is the file. One open per input: an open of a file no format
@@ -8,7 +8,7 @@
 // OpenImageIO is not instrumented; what is checked is Darkroom's use of what
 // it returns (sizes, channels, metadata).
 #include "harness.h"
-#include "../../../framework/oiio/module.h"
+#include "../../../framework/data/oiio/module.h"
 
 #include <darkroom/error.h>
 

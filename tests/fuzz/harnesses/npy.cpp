@@ -2,7 +2,7 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/formats/npy.h>
+#include <darkroom/data/formats/npy.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

@@ -3,8 +3,8 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/pipeline.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/pipeline.h>
+#include <darkroom/core/registry.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const darkroom::Registry registry;

@@ -2,7 +2,7 @@
 #include "harness.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/scene/mesh_readers.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

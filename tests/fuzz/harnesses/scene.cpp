@@ -1,15 +1,15 @@
 // Scene YAML: parseSceneFile in memory; mesh files it names are looked up in
 // an empty folder of this process's own. Generators run for real, but with
-// their sizes capped (framework/src/scene/generator_seam.h): an input naming
+// their sizes capped (framework/scene/src/generator_seam.h): an input naming
 // a few default isosurfaces cost seconds of field evaluation under the
 // sanitizers, and the corpus filled with such inputs until the harness ran 30
 // inputs a second. Parameters that do not read as numbers are left alone, so
 // the generators' own checks still see them.
 #include "harness.h"
-#include "../../../framework/src/scene/generator_seam.h"
+#include "../../../framework/scene/src/generator_seam.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <cstdlib>
 #include <map>

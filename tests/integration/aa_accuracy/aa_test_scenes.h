@@ -8,9 +8,9 @@
 #include <darkroom/capture_backend.h>
 #include <darkroom/colormap.h>
 #include <darkroom/context.h>
-#include <darkroom/framework/reference.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/accuracy/reference.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 #include <darkroom/scene.h>
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // edge its 16 x 16 pixels must be the coverage-weighted blend of the two sides.
 #include "aa_test_scenes.h"
 
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 using namespace darkroom;
 using namespace darkroom::aatest;

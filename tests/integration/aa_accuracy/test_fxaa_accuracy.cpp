@@ -5,7 +5,7 @@
 // finite colours in range.
 #include "aa_test_scenes.h"
 
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <cstdio>
 

@@ -8,9 +8,9 @@
 // conversion while we interpolate as ParaView does and encode linear colour.
 #include "test_support.h"
 
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/pipeline.h>
 #include <darkroom/srgb.h>
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // confusion's width on a defocused edge), then SSDoF against that reference.
 #include "../aa_accuracy/aa_test_scenes.h"
 
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <cstdio>
 

@@ -14,9 +14,9 @@
 #include "buffer_digest.h"
 #include "test_support.h"
 
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/pipeline.h>
 
 #include <gtest/gtest.h>
 

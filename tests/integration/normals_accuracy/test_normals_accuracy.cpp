@@ -9,9 +9,9 @@
 #include <darkroom/capture_backend.h>
 #include <darkroom/context.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/metrics.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/metrics.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // the harness against.
 #include <darkroom/capture_backend.h>
 #include <darkroom/context.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
 #include "test_support.h"

@@ -2,7 +2,7 @@
 #include "reference_fixture.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/reference.h>
+#include <darkroom/accuracy/reference.h>
 #include <gmock/gmock.h>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/reference.h>
+#include <darkroom/accuracy/reference.h>
 #include <gmock/gmock.h>
 
 #include <cmath>

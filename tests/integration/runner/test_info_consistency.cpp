@@ -4,7 +4,7 @@
 #include "runner_process.h"
 #include "test_support.h"
 
-#include <darkroom/framework/formats/npy.h>
+#include <darkroom/data/formats/npy.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "runner_process.h"
 #include "test_support.h"
 
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>

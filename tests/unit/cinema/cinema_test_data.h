@@ -3,7 +3,7 @@
 // child process: 20 entries on a phi/theta grid with negative and fractional
 // angles, each a small G-buffer (depth, a scalar, an id) with its camera.
 #include <darkroom/buffer.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <cmath>
 #include <limits>

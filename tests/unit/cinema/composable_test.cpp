@@ -3,8 +3,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/composable.h>
-#include <darkroom/framework/formats/npy.h>
+#include <darkroom/data/cinema/composable.h>
+#include <darkroom/data/formats/npy.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -2,9 +2,9 @@
 // disagreement named by file, data.csv line, column and expectation.
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/consistency.h>
-#include <darkroom/framework/formats/npy.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/cinema/consistency.h>
+#include <darkroom/data/formats/npy.h>
+#include <darkroom/data/image_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The tolerant data.csv reader on the variants real databases contain, and
 // its strict mode.
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/csv.h>
+#include <darkroom/data/cinema/csv.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/database.h>
+#include <darkroom/data/cinema/database.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -5,10 +5,10 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/csv.h>
-#include <darkroom/framework/cinema/database.h>
-#include <darkroom/framework/cinema/product.h>
-#include <darkroom/framework/formats/npy.h>
+#include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/product.h>
+#include <darkroom/data/formats/npy.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

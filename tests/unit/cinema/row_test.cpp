@@ -1,9 +1,9 @@
-// Row text (framework/include/darkroom/framework/cinema/row.h): round trip,
+// Row text (framework/data/include/darkroom/data/cinema/row.h): round trip,
 // quoting, placeholders with and without number formats, clear errors.
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/row.h>
+#include <darkroom/data/cinema/row.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/cinema/writer.h>
+#include <darkroom/data/cinema/writer.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

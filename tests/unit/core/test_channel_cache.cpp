@@ -6,8 +6,8 @@
 #include "test_filters.h"
 #include "test_support.h"
 
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
 #include <chrono>

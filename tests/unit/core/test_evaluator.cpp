@@ -1,6 +1,6 @@
 #include "test_filters.h"
 
-#include <darkroom/framework/evaluator.h>
+#include <darkroom/core/evaluator.h>
 #include <gtest/gtest.h>
 
 using namespace darkroom;

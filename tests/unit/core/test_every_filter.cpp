@@ -4,10 +4,10 @@
 // files to run gets a setup entry in fixtureFor() below.
 #include "test_support.h"
 
-#include <darkroom/framework/cinema/writer.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/pipeline.h>
-#include <darkroom/framework/run_filter.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/pipeline.h>
+#include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
 #include <cmath>

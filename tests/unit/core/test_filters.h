@@ -2,7 +2,7 @@
 // Small filters registered as built-ins for the graph/evaluator tests. Each
 // counts its executions so caching can be checked from outside.
 #include <darkroom/darkroom.h>
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 
 #include <algorithm>
 #include <atomic>

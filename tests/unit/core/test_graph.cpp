@@ -1,6 +1,6 @@
 #include "test_filters.h"
 
-#include <darkroom/framework/graph.h>
+#include <darkroom/core/graph.h>
 #include <gtest/gtest.h>
 
 using namespace darkroom;

@@ -3,8 +3,8 @@
 // validate; bench/ or docs/performance.md has the timing). Correctness only.
 #include "test_filters.h"
 
-#include <darkroom/framework/evaluator.h>
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/pipeline.h>
 #include <gtest/gtest.h>
 
 #include <pthread.h>

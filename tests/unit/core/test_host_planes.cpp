@@ -1,5 +1,5 @@
 // Host planes of a huge page (2 MiB) or more are mapped on their own and
-// aligned to one (sdk/src/buffer.cpp, framework/src/core/plane_pool.cpp):
+// aligned to one (sdk/src/buffer.cpp, framework/core/src/plane_pool.cpp):
 // still zeroed where asked, writable to their last pixel, and released.
 #include <darkroom/buffer.h>
 #include <gtest/gtest.h>

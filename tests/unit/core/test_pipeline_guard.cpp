@@ -4,7 +4,7 @@
 #include "test_filters.h"
 #include "test_support.h"
 
-#include <darkroom/framework/pipeline.h>
+#include <darkroom/core/pipeline.h>
 #include <gtest/gtest.h>
 
 using namespace darkroom;

@@ -1,6 +1,6 @@
 // Misbehaving plugins, tried as an adversary would: each is reported naming
 // its file and skipped, and the host goes on loading the good one after it.
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 #include <gtest/gtest.h>
 
 #include "test_support.h"

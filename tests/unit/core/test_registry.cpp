@@ -1,6 +1,6 @@
 #include "test_filters.h"
 
-#include <darkroom/framework/registry.h>
+#include <darkroom/core/registry.h>
 #include <gtest/gtest.h>
 
 #include <string>

@@ -5,8 +5,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/formats/npy.h>
-#include <darkroom/framework/formats/vti.h>
+#include <darkroom/data/formats/npy.h>
+#include <darkroom/data/formats/vti.h>
 #include <darkroom/limits.h>
 
 #include <gmock/gmock.h>

@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/formats/npy.h>
+#include <darkroom/data/formats/npy.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/formats/vti.h>
+#include <darkroom/data/formats/vti.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "mesh_checks.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/generators.h>
+#include <darkroom/scene/generators.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

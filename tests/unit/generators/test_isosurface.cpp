@@ -1,6 +1,6 @@
 #include "mesh_checks.h"
 
-#include <darkroom/framework/scene/generators.h>
+#include <darkroom/scene/generators.h>
 
 #include <gtest/gtest.h>
 

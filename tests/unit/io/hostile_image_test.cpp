@@ -6,7 +6,7 @@
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 #include <darkroom/limits.h>
 
 #include <gmock/gmock.h>

@@ -2,7 +2,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 #include <darkroom/srgb.h>
 
 #include <gmock/gmock.h>

@@ -4,11 +4,11 @@
 // the same channel order, camera and attributes; PNG pixels are identical
 // whichever encoder wrote them. And a process that meets only EXR and PNG
 // never loads OpenImageIO.
-#include "../../../framework/oiio/module.h"
+#include "../../../framework/data/oiio/module.h"
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/image_io.h>
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>

@@ -9,8 +9,8 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/formats/vti.h>
-#include <darkroom/framework/image_io.h>
+#include <darkroom/data/formats/vti.h>
+#include <darkroom/data/image_io.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/metrics.h>
+#include <darkroom/accuracy/metrics.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "mesh_test_files.h"
 #include "test_support.h"
 
-#include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/scene/mesh_readers.h>
 #include <darkroom/limits.h>
 
 #include <sys/stat.h>

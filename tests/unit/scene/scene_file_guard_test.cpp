@@ -4,7 +4,7 @@
 #include "mesh_test_files.h"
 #include "test_support.h"
 
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/scene_file.h>
 
 using namespace darkroom;
 using darkroom::test::expectError;

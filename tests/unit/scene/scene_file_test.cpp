@@ -1,7 +1,7 @@
 #include "mesh_test_files.h"
 #include "test_support.h"
 
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <cmath>
 

@@ -6,9 +6,9 @@
 #include "vtk_test_files.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/mesh_readers.h>
-#include <darkroom/framework/scene/scene_file.h>
-#include <darkroom/framework/scene/scene_partition.h>
+#include <darkroom/scene/mesh_readers.h>
+#include <darkroom/scene/scene_file.h>
+#include <darkroom/scene/scene_partition.h>
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/volume.h>
+#include <darkroom/scene/volume.h>
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/scene/scene_file.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/scene/scene_file.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

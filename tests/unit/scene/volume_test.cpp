@@ -6,8 +6,8 @@
 #include "test_support.h"
 
 #include <darkroom/error.h>
-#include <darkroom/framework/scene/mesh_readers.h>
-#include <darkroom/framework/scene/volume.h>
+#include <darkroom/scene/mesh_readers.h>
+#include <darkroom/scene/volume.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "mesh_test_files.h"
 #include "test_support.h"
 
-#include <darkroom/framework/scene/mesh_readers.h>
+#include <darkroom/scene/mesh_readers.h>
 
 #include <cmath>
 

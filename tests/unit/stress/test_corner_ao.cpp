@@ -1,7 +1,7 @@
 // cornerAo against its closed form at a few k, and against a numeric
 // quadrature of the hemisphere integral for both weightings.
 #include <darkroom/error.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

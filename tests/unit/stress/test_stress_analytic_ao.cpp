@@ -4,10 +4,10 @@
 // large enough that nothing outside the closed form's model shows up.
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/reference.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/reference.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Every stress family builds and its scene is valid: indices in range, field
 // sizes right, finite vertices, the colour field on every object inside
 // [fieldMin, fieldMax], deterministic, and the camera sees the geometry.
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // gap, step height and stripe period; bad family names and knob values are
 // rejected with messages that name the family.
 #include <darkroom/error.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

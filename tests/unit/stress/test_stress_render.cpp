@@ -5,10 +5,10 @@
 // every sweep (size DARKROOM_STRESS_DUMP_SIZE, default 256) for inspection.
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
-#include <darkroom/framework/image_io.h>
-#include <darkroom/framework/registry.h>
-#include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/stress_scenes.h>
+#include <darkroom/data/image_io.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/accuracy/stress_scenes.h>
 
 #include <gtest/gtest.h>
 

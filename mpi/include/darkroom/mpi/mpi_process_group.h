@@ -1,6 +1,6 @@
 #pragma once
 // The framework's ProcessGroup (scene_partition.h) over an MPI communicator.
-#include <darkroom/framework/scene/scene_partition.h>
+#include <darkroom/scene/scene_partition.h>
 #include <darkroom/mpi/communicator.h>
 
 namespace darkroom::mpi {

@@ -1,0 +1,25 @@
+#pragma once
+// A float buffer as the 8-bit sRGB pixels of a PNG, JPEG, TIFF...: which
+// channels (image_io.h's rules), linear -> sRGB code values, straight alpha.
+// Shared by the native PNG writer and the OpenImageIO module. Internal.
+#include <darkroom/buffer.h>
+#include <darkroom/data/image_io.h>
+
+#include <string>
+#include <vector>
+
+namespace darkroom::io {
+
+struct EightBitPixels {
+    int channels = 0;                 // 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA
+    bool alpha = false;               // the last channel is alpha
+    std::vector<unsigned char> data;  // interleaved, rows top to bottom
+};
+
+// `alphaAllowed`: false for formats without alpha (JPEG), which then get grey
+// or RGB. Throws darkroom::Error naming `path` when the channels cannot be
+// chosen or are not float32.
+EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+                              bool alphaAllowed);
+
+}  // namespace darkroom::io
