@@ -6,6 +6,8 @@
 // expand to gigabytes, and an alias inside its own anchor makes a cycle that
 // a walk never leaves. yaml-cpp also keeps a map's repeated keys (operator[]
 // sees the first) and reads only the first of several documents.
+#include <darkroom/export.h>
+
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
@@ -23,10 +25,10 @@ inline constexpr std::uint64_t kAliasByteBudget = std::uint64_t(64) << 20;
 // to a node it is part of, and that aliases expand to at most the budgets
 // above. A problem is a YAML::ParserException at its mark (line and column),
 // as yaml-cpp's own syntax errors are; its `msg` is a sentence for the user.
-YAML::Node load(const std::string& text);
+DARKROOM_API YAML::Node load(const std::string& text);
 
 // The valid key closest to `key` by edit distance, if it is close enough to
 // be a misspelling of it (at most a third of its letters wrong); "" if none.
-std::string nearestKey(const std::string& key, const std::vector<std::string>& valid);
+DARKROOM_API std::string nearestKey(const std::string& key, const std::vector<std::string>& valid);
 
 }  // namespace darkroom::yamlguard
