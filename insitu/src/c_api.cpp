@@ -70,15 +70,19 @@ int darkroom_insitu_set_threads(darkroom_insitu* s, int threads) {
 }
 
 int darkroom_insitu_set_image(darkroom_insitu* s, int width, int height, double fov, double viewHeight) {
-    return guarded(s, [&](auto& x) { x.setImage(width, height, fov, viewHeight); });
+    return guarded(s, [&](auto& x) { x.setup().setImage(width, height, fov, viewHeight); });
 }
 
 int darkroom_insitu_camera_orbit(darkroom_insitu* s, const double target[3], double distance, const double up[3],
                                  const double* phi, int phiCount, const double* theta, int thetaCount) {
     return guarded(s, [&](auto& x) {
-        if (!target || !up || (phiCount > 0 && !phi) || (thetaCount > 0 && !theta) || phiCount < 0 || thetaCount < 0)
-            throw BadInput("darkroom_insitu_camera_orbit: missing target, up or angle arrays");
-        x.cameraOrbit(vec(target), distance, vec(up), std::vector<double>(phi, phi + phiCount),
+        const char* call = "darkroom_insitu_camera_orbit";
+        for (const auto& [count, what] : {std::pair{phiCount, "phi_count"}, std::pair{thetaCount, "theta_count"}})
+            if (count < 1 || count > darkroom::insitu::kMaxAngles)
+                throw BadInput(std::string(call) + ": " + what + " " + std::to_string(count) + "; expected 1 to " +
+                               std::to_string(darkroom::insitu::kMaxAngles));
+        if (!target || !up || !phi || !theta) throw BadInput(std::string(call) + ": missing target, up or angle arrays");
+        x.setup().cameraOrbit(vec(target), distance, vec(up), std::vector<double>(phi, phi + phiCount),
                       std::vector<double>(theta, theta + thetaCount));
     });
 }
@@ -87,24 +91,24 @@ int darkroom_insitu_add_camera(darkroom_insitu* s, const double position[3], con
                                const double up[3]) {
     return guarded(s, [&](auto& x) {
         if (!position || !target || !up) throw BadInput("darkroom_insitu_add_camera: missing position, target or up");
-        x.addCamera(vec(position), vec(target), vec(up));
+        x.setup().addCamera(vec(position), vec(target), vec(up));
     });
 }
 
 int darkroom_insitu_request_field(darkroom_insitu* s, const char* name) {
-    return guarded(s, [&](auto& x) { x.requestField(text(name)); });
+    return guarded(s, [&](auto& x) { x.setup().requestField(text(name)); });
 }
 
 int darkroom_insitu_request_normals(darkroom_insitu* s, int on) {
-    return guarded(s, [&](auto& x) { x.requestNormals(on != 0); });
+    return guarded(s, [&](auto& x) { x.setup().requestNormals(on); });
 }
 
 int darkroom_insitu_request_ids(darkroom_insitu* s, int objectIds, int primitiveIds) {
-    return guarded(s, [&](auto& x) { x.requestIds(objectIds != 0, primitiveIds != 0); });
+    return guarded(s, [&](auto& x) { x.setup().requestIds(objectIds, primitiveIds); });
 }
 
 int darkroom_insitu_set_half_float(darkroom_insitu* s, int on) {
-    return guarded(s, [&](auto& x) { x.setHalfFloat(on != 0); });
+    return guarded(s, [&](auto& x) { x.setup().setHalfFloat(on); });
 }
 
 int darkroom_insitu_begin_step(darkroom_insitu* s, double time) {
