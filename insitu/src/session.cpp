@@ -9,6 +9,7 @@
 #include <darkroom/framework/scene/scene_file.h>
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <thread>
 
@@ -16,7 +17,10 @@ namespace darkroom::insitu {
 
 struct Session::StepObject {
     embree::ObjectView view;
-    std::vector<float> packed;  // x, y, z, radius records when they had to be joined
+    // x, y, z, radius records when they had to be joined; 16-byte aligned
+    // (operator new's alignment), as Embree loads them.
+    std::vector<float> packed;
+    static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
 };
 
 struct Session::Step {
@@ -97,23 +101,25 @@ const float* Session::roundVertices(const char* call, StepObject& o, const float
                                     std::int64_t count, const float* radii, float radius) {
     const std::string& name = o.view.name;
     stride = checkStride(call, name, stride, 16);
-    const bool shared = !radii && stride >= 16;
-    checkRadius(call, name, radius, !radii && !shared);
-    if (shared) {
-        // Shared as they are: x, y, z, radius records.
-        checkRadii(call, name, vertices + 3, stride, count);
-        o.view.vertexStride = stride;
+    const bool recordRadii = !radii && stride >= 16;
+    checkRadius(call, name, radius, !radii && !recordRadii);
+    if (recordRadii) checkRadii(call, name, vertices + 3, stride, count);
+    if (radii) checkRadii(call, name, radii, sizeof(float), count);
+    // Embree loads each x, y, z, radius record of tubes and spheres with one
+    // aligned 16-byte load (a misaligned one segfaults in its BVH build).
+    const bool aligned = reinterpret_cast<std::uintptr_t>(vertices) % 16 == 0 && stride % 16 == 0;
+    if (recordRadii && aligned) {
+        o.view.vertexStride = stride;  // shared as they are
         return vertices;
     }
-    if (radii) checkRadii(call, name, radii, sizeof(float), count);
-    // Embree reads x, y, z, radius together: join them (counted as copied).
+    // Joined into aligned records (counted as copied).
     o.packed.resize(4 * std::size_t(count));
     for (std::size_t i = 0; i < std::size_t(count); ++i) {
         const float* v = reinterpret_cast<const float*>(reinterpret_cast<const char*>(vertices) + i * stride);
         o.packed[4 * i] = v[0];
         o.packed[4 * i + 1] = v[1];
         o.packed[4 * i + 2] = v[2];
-        o.packed[4 * i + 3] = radii ? radii[i] : radius;
+        o.packed[4 * i + 3] = radii ? radii[i] : recordRadii ? v[3] : radius;
     }
     copied_ += std::int64_t(16 * std::size_t(count));
     o.view.vertexStride = 16;

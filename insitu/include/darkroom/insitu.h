@@ -10,9 +10,11 @@
  *
  * Arrays are shared with the ray tracer (Embree's shared buffers), not
  * copied, and must stay valid and unchanged until darkroom_insitu_capture
- * returns. Two exceptions, counted by darkroom_insitu_copied_bytes: radii
- * given apart from the positions (Embree wants x, y, z, radius together) and
- * positions of lines or points packed closer than 16 bytes. Triangles read
+ * returns. Three exceptions, counted by darkroom_insitu_copied_bytes: radii
+ * given apart from the positions (Embree wants x, y, z, radius together),
+ * positions of lines or points packed closer than 16 bytes, and their
+ * records when the array's address or the stride is not a multiple of 16
+ * (Embree loads each record with one aligned 16-byte load). Triangles read
  * their x, y, z from records `stride` bytes apart (at least 12); Embree loads
  * 16 bytes at a time, so the last vertex must be followed by 4 readable bytes
  * when the stride is below 16.
