@@ -103,7 +103,7 @@ const float* Session::roundVertices(const char* call, StepObject& o, const float
     stride = checkStride(call, name, stride, 16);
     const bool recordRadii = !radii && stride >= 16;
     checkRadius(call, name, radius, !radii && !recordRadii);
-    if (recordRadii) checkRadii(call, name, vertices + 3, stride, count);
+    if (recordRadii && count > 0) checkRadii(call, name, vertices + 3, stride, count);  // NULL when count is 0
     if (radii) checkRadii(call, name, radii, sizeof(float), count);
     // Embree loads each x, y, z, radius record of tubes and spheres with one
     // aligned 16-byte load (a misaligned one segfaults in its BVH build).

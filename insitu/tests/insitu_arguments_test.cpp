@@ -184,6 +184,21 @@ TEST(InSituArguments, NegativeOrNaNRadiiAreRefused) {
     EXPECT_EQ(darkroom_insitu_lines(b.s, "l", xyzr, 16, 2, seg, 1, nullptr, 0.0f), DARKROOM_INSITU_OK) << b.error();
 }
 
+TEST(InSituArguments, AnObjectWithoutElementsNeedsNoArrays) {
+    // As a rank without a part of an object declares it (docs/insitu.md,
+    // "With MPI"). Its radii were once read at NULL + 12 (UBSan, found by
+    // the fuzz harness; tests/fuzz/corpus/insitu/empty-part.txt).
+    Ball b;
+    const double at[3] = {0, 0, 3}, up[3] = {0, 1, 0};
+    ASSERT_EQ(darkroom_insitu_add_camera(b.s, at, kOrigin, up), DARKROOM_INSITU_OK);
+    ASSERT_EQ(darkroom_insitu_begin_step(b.s, 0.0), DARKROOM_INSITU_OK);
+    EXPECT_EQ(darkroom_insitu_points(b.s, "p", nullptr, 16, 0, nullptr, 0.0f), DARKROOM_INSITU_OK) << b.error();
+    EXPECT_EQ(darkroom_insitu_lines(b.s, "l", nullptr, 16, 0, nullptr, 0, nullptr, 0.0f), DARKROOM_INSITU_OK) << b.error();
+    EXPECT_EQ(darkroom_insitu_triangles(b.s, "t", nullptr, 0, 0, nullptr, 0), DARKROOM_INSITU_OK) << b.error();
+    EXPECT_EQ(darkroom_insitu_capture(b.s), DARKROOM_INSITU_OK) << b.error();
+    EXPECT_EQ(darkroom_insitu_rows_written(b.s), 1);
+}
+
 TEST(InSituArguments, NamesWithLineBreaksOrControlCharactersAreRefused) {
     Ball b;
     ASSERT_EQ(darkroom_insitu_begin_step(b.s, 0.0), DARKROOM_INSITU_OK);
