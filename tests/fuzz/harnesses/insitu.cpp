@@ -18,7 +18,7 @@
 // past its end (a count or stride that would read further is clamped,
 // unless the API must refuse it before reading: negative, beyond 2^32 - 1,
 // a stride of 2^31 or more, more than 3600 angles). Images stay at most
-// 4 x 4 pixels, a session has at most 4 listed cameras or 2 x 2 orbit
+// 4 x 4 pixels (a session starts with `image 4 4 30 0`), a session has at most 4 listed cameras or 2 x 2 orbit
 // views, and an input at most 2 captures (later `capture` lines are
 // skipped), so an input costs a few milliseconds.
 //
@@ -316,6 +316,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             x.s = darkroom_insitu_open(((folder / "db").string() + suffix + ".cdb").c_str(), mode);
             if (!x.s) return 0;  // out of memory
             checked(x.s, DARKROOM_INSITU_OK);
+            // Tiny images from the start: the default is 512 x 512.
+            checked(x.s, darkroom_insitu_set_image(x.s, kMaxSide, kMaxSide, 30.0, 0.0));
         } else if (call == "close") {
             x.close();
         } else if (x.s) {
