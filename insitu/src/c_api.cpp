@@ -17,6 +17,14 @@ namespace {
 
 using darkroom::insitu::BadInput;
 
+// darkroom_insitu_error promises one line: control characters (a line
+// break in an OS message, a binding's text) become spaces.
+std::string oneLine(std::string message) {
+    for (char& c : message)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    return message;
+}
+
 template <class F>
 int guarded(darkroom_insitu* s, F&& f) {
     if (!s) return DARKROOM_INSITU_BAD_INPUT;
@@ -29,12 +37,12 @@ int guarded(darkroom_insitu* s, F&& f) {
         f(*s->session);
         return DARKROOM_INSITU_OK;
     } catch (const BadInput& e) {
-        s->error = e.what();
+        s->error = oneLine(e.what());
         return DARKROOM_INSITU_BAD_INPUT;
     } catch (const std::bad_alloc&) {
         s->error = "out of memory";
     } catch (const std::exception& e) {
-        s->error = e.what();
+        s->error = oneLine(e.what());
     } catch (...) {
         s->error = "unknown error";
     }
@@ -55,7 +63,7 @@ darkroom_insitu* darkroom_insitu_open(const char* database, int mode) {
     try {
         s->session = std::make_unique<darkroom::insitu::Session>(text(database), mode);
     } catch (const std::exception& e) {
-        s->openError = e.what();
+        s->openError = oneLine(e.what());
         s->error = s->openError;
     }
     return s;
@@ -164,7 +172,8 @@ int64_t darkroom_insitu_rows_written(const darkroom_insitu* s) {
 }
 
 int darkroom_insitu_report_error(darkroom_insitu* s, const char* message) {
-    if (s) s->error = text(message);
+    // Every failure says something (a NULL or empty message too).
+    if (s) s->error = message && *message ? oneLine(message) : "an error without a message (darkroom_insitu_report_error)";
     return DARKROOM_INSITU_BAD_INPUT;
 }
 

@@ -6,7 +6,6 @@
 
 #include <darkroom/framework/cinema/writer.h>
 #include <darkroom/framework/run_filter.h>
-#include <darkroom/framework/scene/scene_file.h>
 
 #include <cmath>
 #include <cstdint>

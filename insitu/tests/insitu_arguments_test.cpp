@@ -229,6 +229,17 @@ TEST(InSituArguments, SwitchesAreZeroOrOne) {
     EXPECT_EQ(darkroom_insitu_request_ids(b.s, 1, 1), DARKROOM_INSITU_OK);
 }
 
+TEST(InSituArguments, AReportedErrorIsOneLine) {
+    // darkroom_insitu_error promises one line, also for a binding's message,
+    // and a failure always says something.
+    Ball b;
+    EXPECT_EQ(darkroom_insitu_report_error(b.s, "array 'x'\nis not contiguous\r"), DARKROOM_INSITU_BAD_INPUT);
+    EXPECT_EQ(b.error(), "array 'x' is not contiguous ");
+    EXPECT_EQ(darkroom_insitu_report_error(b.s, nullptr), DARKROOM_INSITU_BAD_INPUT);
+    EXPECT_EQ(b.error(), "an error without a message (darkroom_insitu_report_error)");
+    EXPECT_EQ(darkroom_insitu_report_error(nullptr, "x"), DARKROOM_INSITU_BAD_INPUT);
+}
+
 TEST(InSituArguments, ThreadCountsAndAngleCountsAreBounded) {
     Ball b;
     EXPECT_EQ(darkroom_insitu_set_threads(b.s, 1 << 30), DARKROOM_INSITU_BAD_INPUT);

@@ -169,8 +169,8 @@ DARKROOM_INSITU_API int64_t darkroom_insitu_copied_bytes(const darkroom_insitu* 
 DARKROOM_INSITU_API int64_t darkroom_insitu_rows_written(const darkroom_insitu* s);
 
 /* For language bindings: makes `message` the session's last error (the
- * Fortran module reports a non-contiguous array this way). Returns
- * DARKROOM_INSITU_BAD_INPUT. */
+ * Fortran module reports a non-contiguous array this way; control
+ * characters become spaces). Returns DARKROOM_INSITU_BAD_INPUT. */
 DARKROOM_INSITU_API int darkroom_insitu_report_error(darkroom_insitu* s, const char* message);
 
 #ifdef __cplusplus

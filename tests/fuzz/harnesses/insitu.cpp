@@ -281,8 +281,7 @@ void run(Session& x, const std::string& call, Line& l) {
     }
     else if (call == "error") {
         const std::string text = l.word();
-        if (darkroom_insitu_report_error(x.s, text.c_str()) != DARKROOM_INSITU_BAD_INPUT)
-            finding("report_error did not return BAD_INPUT", 0, text.c_str());
+        checked(x.s, darkroom_insitu_report_error(x.s, text.c_str()));  // BAD_INPUT, and still one line
     } else if (call == "stats") {
         (void)darkroom_insitu_copied_bytes(x.s);
         (void)darkroom_insitu_rows_written(x.s);
