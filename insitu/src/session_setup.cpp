@@ -136,9 +136,11 @@ void Setup::checkReach(const Bounds& data) const {
     auto refuse = [](const std::string& where, const std::string& problem) {
         if (!problem.empty()) throw BadInput("darkroom_insitu_capture: " + where + problem);
     };
-    // The scene, for these bounds, is this step's objects on every rank.
-    if (fov_ == 0.0) refuse("", camera_bounds::viewHeightProblem(viewHeight_, radius));
-    for (std::size_t i = 0; i < specs_.size(); ++i) {
+    // The scene, for these bounds, is this step's objects on every rank. A
+    // step without any (no particles yet) says nothing of where the data
+    // lie: only the float's reach applies then.
+    if (fov_ == 0.0 && !data.empty()) refuse("", camera_bounds::viewHeightProblem(viewHeight_, radius));
+    for (std::size_t i = 0; i < specs_.size() && !data.empty(); ++i) {
         const CameraSpec& c = specs_[i];
         if (c.orbit) {
             refuse("the orbit's ", camera_bounds::pointProblem("target", c.target, centre, radius));

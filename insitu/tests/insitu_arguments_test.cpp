@@ -93,6 +93,24 @@ TEST(InSituArguments, CamerasBeyondSinglePrecisionAreRefusedWhateverTheDataSize)
     expectRefusedCapture(o, {"beyond 1e+18 world units", "view's half extent"});
 }
 
+TEST(InSituArguments, AStepWithoutObjectsIsCheckedOnlyAgainstTheFloatReach) {
+    // No particles yet: nothing says where the data lie, so a camera far
+    // from the origin (where they will be) is not refused; one beyond a
+    // float's reach still is.
+    Ball b;
+    const double far[3] = {1e9, 0, 0}, at[3] = {1e9, 0, 5}, up[3] = {0, 1, 0};
+    ASSERT_EQ(darkroom_insitu_add_camera(b.s, at, far, up), DARKROOM_INSITU_OK);
+    ASSERT_EQ(darkroom_insitu_begin_step(b.s, 0.0), DARKROOM_INSITU_OK);
+    ASSERT_EQ(darkroom_insitu_points(b.s, "tracers", nullptr, 16, 0, nullptr, 0.0f), DARKROOM_INSITU_OK);
+    EXPECT_EQ(darkroom_insitu_capture(b.s), DARKROOM_INSITU_OK) << b.error();
+    Ball c;
+    const double beyond[3] = {1e19, 0, 0}, beyondAt[3] = {1e19, 0, 5};
+    ASSERT_EQ(darkroom_insitu_add_camera(c.s, beyondAt, beyond, up), DARKROOM_INSITU_OK);
+    ASSERT_EQ(darkroom_insitu_begin_step(c.s, 0.0), DARKROOM_INSITU_OK);
+    EXPECT_EQ(darkroom_insitu_capture(c.s), DARKROOM_INSITU_BAD_INPUT);
+    EXPECT_NE(c.error().find("beyond 1e+18 world units"), std::string::npos) << c.error();
+}
+
 TEST(InSituArguments, ARefusedCaptureLeavesTheSessionUsable) {
     Ball b;
     ASSERT_EQ(darkroom_insitu_set_image(b.s, 8, 8, 0.0, 1e300), DARKROOM_INSITU_OK);
