@@ -247,8 +247,16 @@ void Session::capture() {
         counts.push_back(o.view.primitiveCount);
         names += o.view.name + '\n';
     }
-    // Cameras against the data's size: the same bounds, so the same answer, on every rank.
-    setup_.checkReach(agreeBounds(*ranks_, boundsOf(views)));
+    // Cameras against the data's size: the same bounds, so the same answer,
+    // on every rank that made the same setup calls; agreed all the same, so
+    // that ranks set up differently fail together rather than wait.
+    std::string outOfReach;
+    try {
+        setup_.checkReach(agreeBounds(*ranks_, boundsOf(views)));
+    } catch (const BadInput& e) {
+        outOfReach = e.what();
+    }
+    if (const std::string e = ranks_->agreedError(outOfReach); !e.empty()) throw BadInput(e);
     try {
         if (!device_) device_ = std::make_shared<embree::Device>();
         bvh = std::make_unique<embree::SceneBvh>(device_, views, nullptr);
