@@ -17,6 +17,14 @@ namespace {
 
 using darkroom::insitu::BadInput;
 
+// darkroom_insitu_error promises one line: control characters (a line
+// break in an OS message, a binding's text) become spaces.
+std::string oneLine(std::string message) {
+    for (char& c : message)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    return message;
+}
+
 template <class F>
 int guarded(darkroom_insitu* s, F&& f) {
     if (!s) return DARKROOM_INSITU_BAD_INPUT;
@@ -29,12 +37,12 @@ int guarded(darkroom_insitu* s, F&& f) {
         f(*s->session);
         return DARKROOM_INSITU_OK;
     } catch (const BadInput& e) {
-        s->error = e.what();
+        s->error = oneLine(e.what());
         return DARKROOM_INSITU_BAD_INPUT;
     } catch (const std::bad_alloc&) {
         s->error = "out of memory";
     } catch (const std::exception& e) {
-        s->error = e.what();
+        s->error = oneLine(e.what());
     } catch (...) {
         s->error = "unknown error";
     }
@@ -55,7 +63,7 @@ darkroom_insitu* darkroom_insitu_open(const char* database, int mode) {
     try {
         s->session = std::make_unique<darkroom::insitu::Session>(text(database), mode);
     } catch (const std::exception& e) {
-        s->openError = e.what();
+        s->openError = oneLine(e.what());
         s->error = s->openError;
     }
     return s;
@@ -70,15 +78,19 @@ int darkroom_insitu_set_threads(darkroom_insitu* s, int threads) {
 }
 
 int darkroom_insitu_set_image(darkroom_insitu* s, int width, int height, double fov, double viewHeight) {
-    return guarded(s, [&](auto& x) { x.setImage(width, height, fov, viewHeight); });
+    return guarded(s, [&](auto& x) { x.setup().setImage(width, height, fov, viewHeight); });
 }
 
 int darkroom_insitu_camera_orbit(darkroom_insitu* s, const double target[3], double distance, const double up[3],
                                  const double* phi, int phiCount, const double* theta, int thetaCount) {
     return guarded(s, [&](auto& x) {
-        if (!target || !up || (phiCount > 0 && !phi) || (thetaCount > 0 && !theta) || phiCount < 0 || thetaCount < 0)
-            throw BadInput("darkroom_insitu_camera_orbit: missing target, up or angle arrays");
-        x.cameraOrbit(vec(target), distance, vec(up), std::vector<double>(phi, phi + phiCount),
+        const char* call = "darkroom_insitu_camera_orbit";
+        for (const auto& [count, what] : {std::pair{phiCount, "phi_count"}, std::pair{thetaCount, "theta_count"}})
+            if (count < 1 || count > darkroom::insitu::kMaxAngles)
+                throw BadInput(std::string(call) + ": " + what + " " + std::to_string(count) + "; expected 1 to " +
+                               std::to_string(darkroom::insitu::kMaxAngles));
+        if (!target || !up || !phi || !theta) throw BadInput(std::string(call) + ": missing target, up or angle arrays");
+        x.setup().cameraOrbit(vec(target), distance, vec(up), std::vector<double>(phi, phi + phiCount),
                       std::vector<double>(theta, theta + thetaCount));
     });
 }
@@ -87,24 +99,24 @@ int darkroom_insitu_add_camera(darkroom_insitu* s, const double position[3], con
                                const double up[3]) {
     return guarded(s, [&](auto& x) {
         if (!position || !target || !up) throw BadInput("darkroom_insitu_add_camera: missing position, target or up");
-        x.addCamera(vec(position), vec(target), vec(up));
+        x.setup().addCamera(vec(position), vec(target), vec(up));
     });
 }
 
 int darkroom_insitu_request_field(darkroom_insitu* s, const char* name) {
-    return guarded(s, [&](auto& x) { x.requestField(text(name)); });
+    return guarded(s, [&](auto& x) { x.setup().requestField(text(name)); });
 }
 
 int darkroom_insitu_request_normals(darkroom_insitu* s, int on) {
-    return guarded(s, [&](auto& x) { x.requestNormals(on != 0); });
+    return guarded(s, [&](auto& x) { x.setup().requestNormals(on); });
 }
 
 int darkroom_insitu_request_ids(darkroom_insitu* s, int objectIds, int primitiveIds) {
-    return guarded(s, [&](auto& x) { x.requestIds(objectIds != 0, primitiveIds != 0); });
+    return guarded(s, [&](auto& x) { x.setup().requestIds(objectIds, primitiveIds); });
 }
 
 int darkroom_insitu_set_half_float(darkroom_insitu* s, int on) {
-    return guarded(s, [&](auto& x) { x.setHalfFloat(on != 0); });
+    return guarded(s, [&](auto& x) { x.setup().setHalfFloat(on); });
 }
 
 int darkroom_insitu_begin_step(darkroom_insitu* s, double time) {
@@ -160,7 +172,8 @@ int64_t darkroom_insitu_rows_written(const darkroom_insitu* s) {
 }
 
 int darkroom_insitu_report_error(darkroom_insitu* s, const char* message) {
-    if (s) s->error = text(message);
+    // Every failure says something (a NULL or empty message too).
+    if (s) s->error = message && *message ? oneLine(message) : "an error without a message (darkroom_insitu_report_error)";
     return DARKROOM_INSITU_BAD_INPUT;
 }
 

@@ -39,6 +39,32 @@ private:
     int onThisNode_;
 };
 
+// An MPI error on a handle that is no communicator is raised on
+// MPI_COMM_WORLD (MPI_COMM_SELF from MPI 4 on), whose handler is the
+// simulation's and by default aborts the job: while a handle is tried, such
+// errors are returned instead, then the simulation's handlers are put back.
+class ErrorsReturned {
+public:
+    ErrorsReturned() {
+        for (int i = 0; i < 2; ++i) {
+            MPI_Comm_get_errhandler(comms_[i], &saved_[i]);
+            MPI_Comm_set_errhandler(comms_[i], MPI_ERRORS_RETURN);
+        }
+    }
+    ~ErrorsReturned() {
+        for (int i = 0; i < 2; ++i) {
+            MPI_Comm_set_errhandler(comms_[i], saved_[i]);
+            MPI_Errhandler_free(&saved_[i]);
+        }
+    }
+    ErrorsReturned(const ErrorsReturned&) = delete;
+    ErrorsReturned& operator=(const ErrorsReturned&) = delete;
+
+private:
+    MPI_Comm comms_[2] = {MPI_COMM_WORLD, MPI_COMM_SELF};
+    MPI_Errhandler saved_[2] = {MPI_ERRHANDLER_NULL, MPI_ERRHANDLER_NULL};
+};
+
 }  // namespace
 
 std::unique_ptr<Ranks> mpiRanks(int fortranComm) {
@@ -48,7 +74,14 @@ std::unique_ptr<Ranks> mpiRanks(int fortranComm) {
     const MPI_Comm comm = MPI_Comm_f2c(MPI_Fint(fortranComm));
     if (comm == MPI_COMM_NULL) throw Error("in situ: the communicator handle " + std::to_string(fortranComm) + " is MPI_COMM_NULL");
     MPI_Comm own = MPI_COMM_NULL;
-    mpi::check(MPI_Comm_dup(comm, &own), "MPI_Comm_dup of the simulation's communicator");
+    int code = MPI_SUCCESS;
+    {
+        const ErrorsReturned returned;
+        code = MPI_Comm_dup(comm, &own);
+    }
+    const std::string what = "MPI_Comm_dup of the communicator handle " + std::to_string(fortranComm) +
+                             " (give MPI_Comm_c2f(comm) in C, the INTEGER handle in Fortran)";
+    mpi::check(code, what.c_str());
     // Errors come back as codes, turned into messages, instead of aborting.
     MPI_Comm_set_errhandler(own, MPI_ERRORS_RETURN);
     return std::make_unique<OverMpi>(own);

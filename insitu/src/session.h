@@ -1,7 +1,9 @@
 #pragma once
 // One in situ session: the C API (c_api.cpp) is a thin error boundary over
 // this class. See darkroom/insitu.h for what each step means.
+#include "arguments.h"
 #include "ranks.h"
+#include "session_setup.h"
 
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
@@ -23,12 +25,6 @@ struct ObjectView;
 
 namespace darkroom::insitu {
 
-// A mistake in the arguments of a call (DARKROOM_INSITU_BAD_INPUT).
-class BadInput : public Error {
-public:
-    using Error::Error;
-};
-
 class Session {
 public:
     Session(std::string database, int mode);
@@ -36,17 +32,8 @@ public:
 
     void setRanks(std::unique_ptr<Ranks> ranks);
     void setThreads(int threads);
-    void setImage(int width, int height, double fovDegrees, double viewHeight);
-    void cameraOrbit(const Vec3& target, double distance, const Vec3& up, std::vector<double> phi,
-                     std::vector<double> theta);
-    void addCamera(const Vec3& position, const Vec3& target, const Vec3& up);
-    void requestField(const std::string& name);
-    void requestNormals(bool on) { request_.normals = on; }
-    void requestIds(bool objectIds, bool primitiveIds) {
-        request_.objectId = objectIds;
-        request_.primitiveId = primitiveIds;
-    }
-    void setHalfFloat(bool on) { half_ = on; }
+    // Image, cameras and channels (checked there; fixed after the first capture).
+    Setup& setup() { return setup_; }
 
     void beginStep(double time);
     void triangles(const std::string& name, const float* vertices, std::size_t stride, std::int64_t vertexCount,
@@ -66,26 +53,24 @@ public:
 
 private:
     struct Step;
-    struct CameraSpec;
     struct StepObject;
-    StepObject& declare(const std::string& name, Representation representation);
+    StepObject& declare(const char* call, const std::string& name, Representation representation);
     // Lines and points: declared with their x, y, z, radius records.
-    StepObject& declareRound(const std::string& name, Representation representation, const float* vertices,
-                             std::size_t stride, std::int64_t vertexCount, const float* radii, float radius);
-    const float* roundVertices(StepObject& o, const float* vertices, std::size_t stride, std::int64_t count,
-                               const float* radii, float radius);
-    std::vector<std::pair<std::vector<std::pair<std::string, double>>, Camera>> cameras() const;
+    StepObject& declareRound(const char* call, const std::string& name, Representation representation,
+                             const float* vertices, std::size_t stride, std::int64_t vertexCount, const float* radii,
+                             float radius);
+    const float* roundVertices(const char* call, StepObject& o, const float* vertices, std::size_t stride,
+                               std::int64_t count, const float* radii, float radius);
     void openWriter(const std::vector<std::string>& columns);
+    // Opens the database on rank 0 (first capture) and returns the indices
+    // of `cams` whose rows it still lacks, on every rank (collective).
+    std::string rowsToCapture(const CameraList& cams);
 
     std::string database_;
     int mode_;
     std::unique_ptr<Ranks> ranks_;
     int threads_ = 0;
-    bool half_ = false;
-    int width_ = 512, height_ = 512;
-    double fov_ = 30.0, viewHeight_ = 0.0;
-    std::vector<CameraSpec> cameraSpecs_;
-    CaptureRequest request_;
+    Setup setup_;
     std::unique_ptr<Step> step_;
     std::shared_ptr<embree::Device> device_;
     std::unique_ptr<Context> context_;

@@ -157,10 +157,15 @@ void MainWindow::showEvent(QShowEvent* e) {
 
 MainWindow::~MainWindow() {
     // ~QWidget deletes the children before ~QObject drops their connections:
-    // the scene's items then change the selection and would call back into
-    // this half-destroyed window (a use-after-free valgrind showed).
-    scene_->disconnect(this);
-    doc_->disconnect(this);
+    // whatever they emit while they go would call back into this
+    // half-destroyed window (the scene's items change the selection, a
+    // use-after-free valgrind showed; the document's undo stack, cleared as
+    // it goes, says it is clean, and updateTitle ran on a mere QWidget:
+    // UBSan and Qt's debug build caught it, tests/gui/test_editor_close.cpp).
+    // So every connection into this window ends here: its descendants', and
+    // the undo stack's (a member of the document, not a child).
+    for (QObject* child : findChildren<QObject*>()) child->disconnect(this);
+    doc_->undoStack()->disconnect(this);
 }
 
 QDockWidget* MainWindow::dock(const QString& objectName) const {

@@ -11,6 +11,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
+#include <darkroom/scene/camera_bounds.h>
 #include <darkroom/scene/generators.h>
 #include <darkroom/scene/mesh_readers.h>
 #include <darkroom/scene/scene_file.h>
@@ -63,6 +64,7 @@ public:
         if (root["backend"]) d.backend = text(root["backend"], "backend");
         d.request = channels(root["channels"], *d.scene, root);
         d.cameras = cameras(root["cameras"], *d.scene);
+        for (const auto& c : d.cameras) checkRayOrigin(root["cameras"] ? root["cameras"] : root, c);
         d.inputFiles = inputFiles_;
         return d;
     }
@@ -389,8 +391,8 @@ private:
         proto.width = proto.height = 512;
         proto.fovYDegrees = 30.0;
         const Bounds b = bounds(scene);
-        const double radius = b.empty() || b.radius() <= 0 ? 1.0 : b.radius();
-        const Vec3 center = b.empty() ? Vec3{} : b.center();
+        const double radius = camera_bounds::sceneRadius(b);
+        const Vec3 center = camera_bounds::sceneCentre(b);
         if (n) {
             if (!n.IsMap()) fail(n, "'cameras' must be a map (projection, fov, height, resolution, grid or list)");
             checkKeys(n, {"projection", "fov", "height", "resolution", "grid", "list"}, "cameras");
@@ -402,9 +404,7 @@ private:
             }
             if (const YAML::Node f = n["fov"]) {
                 proto.fovYDegrees = number(f, "fov");
-                if (!(proto.fovYDegrees >= kMinFov && proto.fovYDegrees <= kMaxFov))
-                    fail(f, "fov must lie in [" + shortNumber(kMinFov) + ", " + shortNumber(kMaxFov) + "] degrees, got " +
-                                shortNumber(proto.fovYDegrees));
+                check(f, camera_bounds::fovProblem(proto.fovYDegrees));
             }
             if (const YAML::Node r = n["resolution"]) {
                 if (!r.IsSequence() || r.size() != 2) fail(r, "resolution must be [width, height]");
@@ -415,11 +415,7 @@ private:
             proto.viewHeight = 2.0 * radius * std::max(1.0, double(proto.height) / proto.width);
             if (const YAML::Node h = n["height"]) {
                 proto.viewHeight = number(h, "height");
-                if (!(proto.viewHeight > 0)) fail(h, "height must be positive (world units)");
-                if (proto.viewHeight > kReach * radius || proto.viewHeight < radius / kReach)
-                    fail(h, "height " + shortNumber(proto.viewHeight) + " is out of proportion to the scene: it must lie "
-                                "between " + shortNumber(1 / kReach) + " and " + shortNumber(kReach) +
-                                " times the scene's radius (" + shortNumber(radius) + ")");
+                check(h, camera_bounds::viewHeightProblem(proto.viewHeight, radius));
             }
             if (n["grid"] && n["list"]) fail(n, "give either 'grid' or 'list' cameras, not both");
             if (n["list"]) return cameraList(n["list"], proto, center, radius);
@@ -446,11 +442,7 @@ private:
             if (g["target"]) target = within(g["target"], vec3(g["target"], "target"), "target", target, radius);
             if (g["distance"]) {
                 distance = number(g["distance"], "distance");
-                if (!(distance > 0)) fail(g["distance"], "distance must be positive");
-                if (distance > kReach * radius)
-                    fail(g["distance"], "distance " + shortNumber(distance) + " is too far: cameras must lie within " +
-                                            shortNumber(kReach) + " scene radii (radius " + shortNumber(radius) +
-                                            ") of the scene");
+                check(g["distance"], camera_bounds::distanceProblem(distance, radius));
             }
         }
         std::vector<CameraSample> out;
@@ -490,26 +482,21 @@ private:
         return out;
     }
 
-    // Cameras are ray traced in single precision (Embree). Beyond a million
-    // scene radii a camera sees nothing but rounding, and values far beyond
-    // that overflow a float and abort inside Embree; a field of view near 0
-    // or 180 degrees does the same through tan().
-    static constexpr double kReach = 1e6;
-    static constexpr double kMinFov = 1e-3, kMaxFov = 179.999;
-
-    static std::string shortNumber(double v) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.6g", v);
-        return buf;
+    // Camera values out of bounds (camera_bounds.h: they would abort inside Embree).
+    void check(const YAML::Node& n, const std::string& problem) const {
+        if (!problem.empty()) fail(n, problem);
     }
-    // A point (camera position or target) no further than kReach radii from the scene's centre.
+    // Wherever the grid or list put a camera, its rays start within a float's reach.
+    void checkRayOrigin(const YAML::Node& n, const CameraSample& c) const {
+        const std::string problem = camera_bounds::rayOriginProblem(c.camera);
+        if (problem.empty()) return;
+        std::string name;
+        for (const auto& [k, v] : c.parameters)
+            name += (name.empty() ? "" : ", ") + k + "=" + camera_bounds::shortNumber(v);
+        fail(n, "camera " + name + ": " + problem);
+    }
     Vec3 within(const YAML::Node& n, const Vec3& p, const std::string& what, const Vec3& center, double radius) const {
-        const Vec3 d = p - center;
-        const double far = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-        if (!(far <= kReach * radius))
-            fail(n, what + " [" + shortNumber(p.x) + ", " + shortNumber(p.y) + ", " + shortNumber(p.z) +
-                        "] is too far from the scene: cameras must lie within " + shortNumber(kReach) +
-                        " scene radii (radius " + shortNumber(radius) + ") of its centre");
+        check(n, camera_bounds::pointProblem(what, p, center, radius));
         return p;
     }
     // A unit direction; any non-zero length is accepted (scaled first, so 1e300 does not overflow).

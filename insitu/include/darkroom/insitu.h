@@ -10,9 +10,11 @@
  *
  * Arrays are shared with the ray tracer (Embree's shared buffers), not
  * copied, and must stay valid and unchanged until darkroom_insitu_capture
- * returns. Two exceptions, counted by darkroom_insitu_copied_bytes: radii
- * given apart from the positions (Embree wants x, y, z, radius together) and
- * positions of lines or points packed closer than 16 bytes. Triangles read
+ * returns. Three exceptions, counted by darkroom_insitu_copied_bytes: radii
+ * given apart from the positions (Embree wants x, y, z, radius together),
+ * positions of lines or points packed closer than 16 bytes, and their
+ * records when the array's address or the stride is not a multiple of 16
+ * (Embree loads each record with one aligned 16-byte load). Triangles read
  * their x, y, z from records `stride` bytes apart (at least 12); Embree loads
  * 16 bytes at a time, so the last vertex must be followed by 4 readable bytes
  * when the stride is below 16.
@@ -29,6 +31,20 @@
  * Every function returns DARKROOM_INSITU_OK (0) or an error code; then
  * darkroom_insitu_error() says what went wrong in one line. A failed
  * collective call fails on every rank. Not thread-safe: one thread per session.
+ *
+ * Every argument is checked (docs/insitu.md, "Arguments"): numbers must be
+ * finite, switches 0 or 1, names one line of printable text, counts and
+ * strides within the limits given below; a refused call changes nothing.
+ * Cameras are ray traced in single precision, so, as in scene files
+ * (docs/scene-format.md, "Bounds"), the field of view lies in [0.001,
+ * 179.999] degrees, and darkroom_insitu_capture refuses (BAD_INPUT, nothing
+ * written) a camera position, target or orbit distance more than 10^6 scene
+ * radii from the step's objects, or an orthographic view height not within
+ * 10^-6 to 10^6 of their radius: those would abort inside the ray tracer.
+ *
+ * The setup (image, cameras, channels, half floats) is fixed by the first
+ * capture and recorded in the database: changing it afterwards, or resuming
+ * a database made with another setup, is refused, naming what differs.
  *
  * Usable from C, C++ and Fortran (module darkroom_insitu, darkroom_insitu.f90).
  * docs/insitu.md has a walk-through; examples/insitu/ a complete mini-app. */
@@ -74,19 +90,23 @@ DARKROOM_INSITU_API darkroom_insitu* darkroom_insitu_open(const char* database, 
  * Collective; call before the first capture. */
 DARKROOM_INSITU_API int darkroom_insitu_set_mpi_comm(darkroom_insitu* s, int fortran_comm);
 
-/* Worker threads of this process (0, the default: the machine's cores,
- * divided among the ranks on the node). */
+/* Worker threads of this process, 0 to 4096 (0, the default: the machine's
+ * cores, divided among the ranks on the node). */
 DARKROOM_INSITU_API int darkroom_insitu_set_threads(darkroom_insitu* s, int threads);
 
-/* Image size and projection of every camera: perspective with a vertical
- * field of view in degrees, or orthographic when fov_degrees is 0 and
- * view_height (world units) is positive. */
+/* Image size (1 to 65536 pixels each way) and projection of every camera:
+ * perspective with a vertical field of view in [0.001, 179.999] degrees, or
+ * orthographic when fov_degrees is 0 and view_height (world units) is
+ * positive; view_height is otherwise 0 or any finite positive number. */
 DARKROOM_INSITU_API int darkroom_insitu_set_image(darkroom_insitu* s, int width, int height, double fov_degrees,
                                                  double view_height);
 
 /* Cameras: either an orbit (Cinema's phi/theta grid around `target` at
  * `distance`, `up` the axis of phi; columns phi, theta; the conventions of
- * docs/scene-format.md) or a list of cameras (column camera = 0, 1, ...). */
+ * docs/scene-format.md; 1 to 3600 angles each, phi in [-360, 360], theta in
+ * [-90, 90]) or a list of cameras (column camera = 0, 1, ...; up not
+ * parallel to the view direction). Directions may have any finite non-zero
+ * length. */
 DARKROOM_INSITU_API int darkroom_insitu_camera_orbit(darkroom_insitu* s, const double target[3], double distance,
                                                     const double up[3], const double* phi, int phi_count,
                                                     const double* theta, int theta_count);
@@ -94,7 +114,8 @@ DARKROOM_INSITU_API int darkroom_insitu_add_camera(darkroom_insitu* s, const dou
                                                   const double target[3], const double up[3]);
 
 /* Channels besides depth (Z, always stored): a field by name (NaN where an
- * object lacks it), geometric normals N.x N.y N.z, object and primitive ids. */
+ * object lacks it), geometric normals N.x N.y N.z, object and primitive ids.
+ * `on`, `object_ids` and `primitive_ids` are 0 (off) or 1 (on). */
 DARKROOM_INSITU_API int darkroom_insitu_request_field(darkroom_insitu* s, const char* name);
 DARKROOM_INSITU_API int darkroom_insitu_request_normals(darkroom_insitu* s, int on);
 DARKROOM_INSITU_API int darkroom_insitu_request_ids(darkroom_insitu* s, int object_ids, int primitive_ids);
@@ -106,9 +127,11 @@ DARKROOM_INSITU_API int darkroom_insitu_begin_step(darkroom_insitu* s, double ti
 
 /* Objects of this step. `vertices` holds x, y, z (floats) at the start of
  * each record, records `stride` bytes apart (0: 12 for triangles, 16 for
- * lines and points). Lines and points take their radius from `radii` (one
- * per vertex) when not NULL, else from offset 12 of each record when the
- * stride is at least 16, else the constant `radius`.
+ * lines and points; a multiple of 4 from 12 to 2^31 - 4). Lines and points
+ * take their radius from `radii` (one per vertex) when not NULL, else from
+ * offset 12 of each record when the stride is at least 16, else the
+ * constant `radius` (then positive; otherwise 0 or positive). Radii must be
+ * finite and not negative. Counts: 0 to 2^32 - 1.
  * Triangles: 3 vertex indices each. Lines: one index per segment, the
  * segment joining vertex i and i + 1 (a polyline of n vertices is n - 1
  * consecutive indices). Points: every vertex is a sphere. */
@@ -146,8 +169,8 @@ DARKROOM_INSITU_API int64_t darkroom_insitu_copied_bytes(const darkroom_insitu* 
 DARKROOM_INSITU_API int64_t darkroom_insitu_rows_written(const darkroom_insitu* s);
 
 /* For language bindings: makes `message` the session's last error (the
- * Fortran module reports a non-contiguous array this way). Returns
- * DARKROOM_INSITU_BAD_INPUT. */
+ * Fortran module reports a non-contiguous array this way; control
+ * characters become spaces). Returns DARKROOM_INSITU_BAD_INPUT. */
 DARKROOM_INSITU_API int darkroom_insitu_report_error(darkroom_insitu* s, const char* message);
 
 #ifdef __cplusplus

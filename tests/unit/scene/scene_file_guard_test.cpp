@@ -62,3 +62,16 @@ TEST(SceneFileGuard, ExtremeCameraValuesAreRefusedAtTheirLine) {
     // Sane values far beyond the default still load.
     EXPECT_EQ(parse(kObjects + "cameras:\n  fov: 0.5\n  grid: {distance: 1000, phi: 2, theta: 1}\n").cameras.size(), 2u);
 }
+
+TEST(SceneFileGuard, CamerasBeyondSinglePrecisionAreRefusedWhateverTheSceneSize) {
+    // Within 10^6 radii of a scene 10^14 across, but beyond the 1.8e18 from
+    // which Embree refuses (asserts on) rays: it used to abort the capture.
+    const std::string big = "objects:\n  - generator: isosurface\n    parameters: {resolution: 8}\n    scale: 1e14\n";
+    expectInputError(big + "cameras:\n  grid: {distance: 1e19, phi: 1, theta: 1}\n",
+                     {"scene.yaml:6:", "camera phi=-180, theta=0", "beyond 1e+18 world units"});
+    // Default cameras around a scene that itself reaches 1e18.
+    const std::string huge = "objects:\n  - generator: isosurface\n    parameters: {resolution: 8}\n    scale: 1e18\n";
+    expectInputError(huge, {"scene.yaml", "beyond 1e+18 world units"});
+    expectInputError(big + "cameras:\n  projection: orthographic\n  height: 1e19\n  grid: {distance: 1e15, phi: 1, theta: 1}\n",
+                     {"scene.yaml:6:", "view's half extent"});
+}
