@@ -8,7 +8,32 @@
 #include <darkroom/framework/registry.h>
 #include <darkroom/framework/run_filter.h>
 
+#include <QStringList>
+
+#include <charconv>
+#include <cmath>
+
 namespace editor {
+
+QString readableValue(const std::string& cell) {
+    const char* begin = cell.data();
+    const char* end = begin + cell.size();
+    while (begin < end && *begin == ' ') ++begin;
+    if (begin < end && *begin == '+') ++begin;  // from_chars takes no plus sign
+    double v = 0;
+    const auto [at, ec] = std::from_chars(begin, end, v);
+    if (ec != std::errc() || at != end || !std::isfinite(v)) return QString::fromStdString(cell);
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest that reads back exactly
+    return QString::fromLatin1(buf, int(res.ptr - buf));
+}
+
+QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row) {
+    QStringList parts;
+    for (std::size_t c : db.parameterColumns())
+        parts << QString::fromStdString(db.columns()[c].name) + QLatin1Char('=') + readableValue(db.cell(row, c));
+    return parts.join(QStringLiteral(", "));
+}
 
 std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
     std::vector<CinemaEntry> entries;
@@ -26,7 +51,7 @@ std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
         return entries;
     }
     for (std::size_t r = 0; r < db.rowCount(); ++r)
-        entries.push_back({QString::fromStdString(db.entryName(r)), QString::fromStdString(db.formatParameters(r)), r});
+        entries.push_back({readableLabel(db, r), QString::fromStdString(db.formatParameters(r)), r});
     return entries;
 }
 

@@ -59,6 +59,18 @@ void GraphScene::setErrors(const std::map<QString, QString>& errors) {
     }
 }
 
+void GraphScene::setWaiting(const std::map<QString, QString>& waiting) {
+    for (auto& [name, item] : nodes_) {
+        const auto it = waiting.find(name);
+        item->setWaiting(it == waiting.end() ? QString() : it->second);
+    }
+}
+
+void GraphScene::setInputChannels(const std::map<QString, QStringList>& channels) {
+    for (const auto& [name, list] : channels)
+        if (NodeItem* item = nodeItem(name)) item->setChannelChoices(list);
+}
+
 void GraphScene::setTimings(const std::map<QString, Timing>& timings, bool preview) {
     for (auto& [name, item] : nodes_) {
         const auto it = timings.find(name);

@@ -5,6 +5,7 @@
 #include "cinema_panel.h"
 #include "document.h"
 #include "evaluation.h"
+#include "evaluator_adapter.h"
 #include "graph_scene.h"
 #include "graph_view.h"
 #include "layout.h"
@@ -221,7 +222,10 @@ void MainWindow::scheduleEvaluation() {
         if (!sink.isEmpty()) node = sink;
     }
     const darkroom::Node* n = g.node(node.toStdString());
+    waiting_ = false;
+    render_->setMessage({}, false);
     if (!n) {
+        scene_->setWaiting({});
         render_->setImage(nullptr);
         scene_->setTimings({}, false);
         shownNode_.clear();
@@ -245,6 +249,7 @@ void MainWindow::scheduleEvaluation() {
             }
         }
     shownNode_ = node;
+    if (showWaiting(node, target)) return;
     if (port.isEmpty()) {
         render_->setImage(nullptr);
         return;
@@ -257,7 +262,35 @@ void MainWindow::scheduleEvaluation() {
     eval_->request(g, target, port, doc_->folder());
 }
 
+bool MainWindow::showWaiting(const QString& node, const QString& target) {
+    std::map<QString, QString> waiting;  // node -> what it waits for
+    QStringList lines;
+    for (const auto& [n, input] : waitingForInput(doc_->graph(), target.toStdString())) {
+        const QString line = tr("%1 (%2) is waiting for input: connect its '%3' input")
+                                 .arg(QString::fromStdString(n), QString::fromStdString(doc_->graph().node(n)->type),
+                                      QString::fromStdString(input));
+        waiting[QString::fromStdString(n)] = line;
+        lines << line;
+    }
+    scene_->setWaiting(waiting);
+    if (waiting.empty()) return false;
+    // Not a failure: nothing to evaluate yet. Results still in flight are
+    // of an older graph and are not shown.
+    waiting_ = true;
+    lastRequest_.clear();
+    render_->setImage(nullptr);
+    render_->setMessage(lines.join('\n'), false);
+    timing_->setText(tr("%1: waiting for input").arg(node));
+    emit evaluated();
+    return true;
+}
+
 void MainWindow::onEvaluated(const EvalResult& r) {
+    if (waiting_) {
+        emit evaluated();
+        return;
+    }
+    if (r.level == 0) scene_->setInputChannels(r.inputChannels);
     std::map<QString, QString> errors;
     for (const auto& n : r.errorNodes) errors[n] = r.error;
     if (r.level == 0) scene_->setErrors(errors);
@@ -265,9 +298,18 @@ void MainWindow::onEvaluated(const EvalResult& r) {
         logMessage(r.error);
         statusBar()->showMessage(r.error, 8000);
         timing_->setText(tr("failed"));
+        // Over the picture, where the user looks, naming the failing node
+        // (the evaluator's messages usually start with it already).
+        QStringList named;
+        for (const auto& n : r.errorNodes)
+            if (const darkroom::Node* x = doc_->graph().node(n.toStdString());
+                x && !r.error.contains(QStringLiteral("node '%1'").arg(n)))
+                named << tr("'%1' (%2)").arg(n, QString::fromStdString(x->type));
+        render_->setMessage(named.isEmpty() ? r.error : tr("Node %1 failed: %2").arg(named.join(", "), r.error), true);
         emit evaluated();
         return;
     }
+    render_->setMessage({}, false);
     tags_[++tag_] = {r.generation, r.level};
     render_->setImage(r.image, r.level, tag_);
 

@@ -10,6 +10,9 @@
 
 #include <QMainWindow>
 
+#include "autosave.h"
+
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -63,6 +66,11 @@ public:
     // right of the existing nodes.
     QString addNode(const QString& type, std::optional<QPointF> scenePos = std::nullopt);
     void logMessage(const QString& text);
+    // At the start: offers back the autosave of the session that crashed
+    // last (`ask` answers the question; default a message box) and sets the
+    // older ones aside (File > Recover autosave).
+    void offerRecovery(const std::function<bool(const Recovery&)>& ask = {});
+    void updateRecoverMenu();
     // Bumped when docks are added or renamed: an older saved layout is ignored.
     static constexpr int kLayoutVersion = 2;
     // Window geometry and dock layout to and from QSettings (closing saves,
@@ -86,11 +94,14 @@ private:
     void buildMenus();
     void scheduleEvaluation();
     void onEvaluated(const EvalResult& r);
+    bool showWaiting(const QString& node, const QString& target);
     void onEntryChosen(const QString& database, const QString& parameters);
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();
     bool maybeSave();
+    bool recover(const Recovery& r);
+    void buildHelpMenu();
 
     Document* doc_;
     Autosave* autosave_;
@@ -106,9 +117,11 @@ private:
     QLabel* probe_;
     QLabel* timing_;
     QMenu* recentMenu_ = nullptr;
+    QMenu* recoverMenu_ = nullptr;
     QString shownNode_;
     QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
     bool restored_ = false;   // the layout came from QSettings
+    bool waiting_ = false;    // the shown part waits for input: results in flight are not shown
     bool shownOnce_ = false;
     std::uint64_t tag_ = 0;
     std::map<std::uint64_t, std::pair<std::uint64_t, int>> tags_;  // render tag -> generation, level

@@ -51,6 +51,9 @@ void MainWindow::buildMenus() {
         if (!f.isEmpty()) openPipeline(f);
     });
     recentMenu_ = file->addMenu(tr("Open &Recent"));
+    recoverMenu_ = file->addMenu(tr("Recover &autosave"));
+    recoverMenu_->setObjectName("recoverMenu");
+    connect(recoverMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecoverMenu);
     file->addAction(tr("Open &Cinema database…"), this, [this] {
         const QString f = QFileDialog::getExistingDirectory(this, tr("Open Cinema database (.cdb folder)"), doc_->folder());
         if (!f.isEmpty()) openCinema(f);
@@ -94,6 +97,8 @@ void MainWindow::buildMenus() {
     for (const char* name : {"graph", "palette", "cinema", "log"})
         if (QDockWidget* d = dock(name)) view->addAction(d->toggleViewAction());
     updateRecentMenu();
+    updateRecoverMenu();
+    buildHelpMenu();
 }
 
 bool MainWindow::openPipeline(const QString& path) {
@@ -194,6 +199,49 @@ void MainWindow::updateRecentMenu() {
             if (maybeSave()) openPipeline(f);
         });
     recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+void MainWindow::offerRecovery(const std::function<bool(const Recovery&)>& ask) {
+    const std::vector<Recovery> left = Autosave::leftBehind();
+    if (left.empty()) return;
+    // The newest is the session that crashed last. Older ones were offered
+    // at earlier starts (or ended with it): set aside, not asked about again.
+    for (std::size_t i = 1; i < left.size(); ++i) Autosave::putAside(left[i]);
+    const Recovery& r = left.front();
+    const QString what = r.originalPath.isEmpty() ? tr("an unsaved pipeline") : r.originalPath;
+    bool yes;
+    if (ask) {
+        yes = ask(r);
+    } else {
+        QString text = tr("The last darkroom-editor ended without saving %1 (autosaved %2).\nRestore it?")
+                           .arg(what, r.savedAt);
+        if (left.size() > 1)
+            text += tr("\n\n%1 older autosaves were set aside: File > Recover autosave.").arg(left.size() - 1);
+        yes = QMessageBox::question(this, tr("Recover unsaved work"), text, QMessageBox::Yes | QMessageBox::No,
+                                    QMessageBox::Yes) == QMessageBox::Yes;
+    }
+    if (!yes) Autosave::drop(r);
+    else if (!recover(r)) Autosave::putAside(r);  // unreadable now: kept, never lost
+    updateRecoverMenu();
+}
+
+bool MainWindow::recover(const Recovery& r) {
+    QStringList messages;
+    const bool ok = Autosave::restore(r, doc_, messages);
+    if (ok) logMessage(tr("Restored %1 from %2").arg(r.originalPath.isEmpty() ? tr("an unsaved pipeline") : r.originalPath, r.file));
+    for (const QString& m : messages) logMessage(m);
+    return ok;
+}
+
+void MainWindow::updateRecoverMenu() {
+    if (!recoverMenu_) return;
+    recoverMenu_->clear();
+    for (const Recovery& r : Autosave::setAside())
+        recoverMenu_->addAction(tr("%1 (autosaved %2)").arg(r.originalPath.isEmpty() ? tr("unsaved pipeline") : r.originalPath, r.savedAt),
+                                this, [this, r] {
+                                    if (maybeSave() && recover(r)) statusBar()->showMessage(tr("Recovered %1").arg(r.file), 8000);
+                                });
+    recoverMenu_->setEnabled(!recoverMenu_->isEmpty());
 }
 
 void MainWindow::updateTitle() {

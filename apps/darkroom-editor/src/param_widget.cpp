@@ -1,5 +1,7 @@
 #include "param_widget.h"
 
+#include "channel_port.h"
+
 #include <darkroom/colormap.h>
 #include <darkroom/srgb.h>
 
@@ -133,6 +135,10 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
         });
         break;
     default: {
+        if (isChannelPort(port)) {
+            buildChannelBox(lay);
+            break;
+        }
         line_ = new QLineEdit;
         lay->addWidget(line_, 1);
         connect(line_, &QLineEdit::editingFinished, this, [this] {
@@ -205,7 +211,37 @@ bool ParamWidget::eventFilter(QObject* watched, QEvent* e) {
     return QWidget::eventFilter(watched, e);
 }
 
+void ParamWidget::buildChannelBox(QHBoxLayout* lay) {
+    // A channel of the input: its channels once an evaluation saw them,
+    // or any text (a channel an upstream edit is about to add).
+    combo_ = new QComboBox;
+    combo_->setEditable(true);
+    combo_->setInsertPolicy(QComboBox::NoInsert);
+    combo_->setMinimumContentsLength(6);
+    combo_->lineEdit()->setPlaceholderText(tr("automatic"));
+    lay->addWidget(combo_, 1);
+    connect(combo_, &QComboBox::textActivated, this, [this](const QString& t) { emitText(t); });
+    connect(combo_->lineEdit(), &QLineEdit::editingFinished, this, [this] { emitText(combo_->currentText()); });
+}
+
+void ParamWidget::setChoices(const QStringList& items) {
+    if (!combo_ || !combo_->isEditable()) return;
+    QStringList now;
+    for (int i = 0; i < combo_->count(); ++i) now << combo_->itemText(i);
+    if (now == items) return;
+    QSignalBlocker b(combo_);
+    const QString text = combo_->currentText();
+    combo_->clear();
+    combo_->addItems(items);
+    combo_->setCurrentIndex(int(items.indexOf(text)));
+    combo_->setEditText(text);
+}
+
 void ParamWidget::emitText(const QString& text) {
+    // An editable box reports a choice and then the end of editing: the
+    // same value is one edit, not two.
+    if (port_.type == darkroom::PortType::String && text == text_) return;
+    text_ = text;
     try {
         emit edited(darkroom::parseValue(port_.type, text.toStdString()));
     } catch (const std::exception& e) {
@@ -220,6 +256,7 @@ void ParamWidget::setValue(const darkroom::Value& v) {
         if (spin_) spin_->setValue(v.asFloat());
         if (check_) check_->setChecked(v.asBool());
         if (combo_) combo_->setCurrentText(QString::fromStdString(v.asString()));
+        if (port_.type == darkroom::PortType::String) text_ = QString::fromStdString(v.asString());
         if (line_ && !line_->hasFocus()) line_->setText(QString::fromStdString(darkroom::formatValue(port_.type, v)));
         if (colour_) {
             colourValue_ = v.asColor();
