@@ -52,7 +52,7 @@ QWidget* CinemaPanel::control(const QString& column) const {
     return nullptr;
 }
 
-bool CinemaPanel::open(const QString& path, QString* error) {
+bool CinemaPanel::open(const QString& path, QString* error, const QString& select) {
     std::vector<CinemaEntry> entries;
     try {
         auto db = darkroom::CinemaDatabase::open(path.toStdString());
@@ -126,7 +126,15 @@ bool CinemaPanel::open(const QString& path, QString* error) {
     }
     updating_ = false;
     startThumbnails();
-    selectEntry(0);
+    std::size_t first = 0;
+    if (!select.isEmpty()) {
+        for (std::size_t e = 0; e < entries_.size(); ++e)
+            if (entries_[e].parameters == select) {
+                first = e;
+                break;
+            }
+    }
+    selectEntry(first);
     return true;
 }
 

@@ -72,6 +72,13 @@ std::map<std::string, std::string> waitingForInput(const darkroom::Graph& graph,
 }
 
 EvaluatorAdapter::EvaluatorAdapter() : evaluator_(std::make_shared<darkroom::Evaluator>()) {}
+
+EvaluatorAdapter::EvaluatorAdapter(int threads, std::size_t cacheBytes) {
+    darkroom::EvaluatorOptions o;
+    o.threads = threads;
+    o.cacheBytes = cacheBytes;
+    evaluator_ = std::make_shared<darkroom::Evaluator>(o);
+}
 EvaluatorAdapter::~EvaluatorAdapter() = default;
 
 void EvaluatorAdapter::setInputBase(const std::string& folder) {

@@ -49,6 +49,9 @@ struct FrameProfile {
 class EvaluatorAdapter {
 public:
     EvaluatorAdapter();
+    // `threads` per filter (0: all) and a cap on cached outputs, for
+    // background work (the explorer's pipeline thumbnails).
+    EvaluatorAdapter(int threads, std::size_t cacheBytes);
     ~EvaluatorAdapter();
     EvaluatorAdapter(const EvaluatorAdapter&) = delete;
     EvaluatorAdapter& operator=(const EvaluatorAdapter&) = delete;

@@ -96,6 +96,9 @@ void GraphScene::sync() {
         alive.insert(name);
         NodeItem* item = nodeItem(name);
         if (item && item->typeName() != n.type) {
+            // Out of the map first: deleting it deselects it, and the
+            // selection's listeners walk the map.
+            nodes_.erase(name);
             delete item;
             item = nullptr;
         }
@@ -113,8 +116,9 @@ void GraphScene::sync() {
         if (alive.contains(it->first)) {
             ++it;
         } else {
-            delete it->second;
-            it = nodes_.erase(it);
+            NodeItem* dead = it->second;
+            it = nodes_.erase(it);  // before the delete, as above
+            delete dead;
         }
     }
     // Edges are rebuilt only when they changed: a value edit (every step of

@@ -15,7 +15,9 @@
 #include "render_view.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -82,6 +84,7 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     addDockWidget(Qt::RightDockWidgetArea, cd);
     cd->hide();  // until a database is opened
     quickAdd_ = new QuickAdd(registry, this);
+    buildExplorer(registry);
 
     probe_ = new QLabel;
     timing_ = new QLabel;
@@ -249,6 +252,9 @@ void MainWindow::scheduleEvaluation() {
             }
         }
     shownNode_ = node;
+    if (shownTarget_ != target || shownPort_ != port) explorerPipelineTimer_.start();
+    shownTarget_ = target;
+    shownPort_ = port;
     if (showWaiting(node, target)) return;
     if (port.isEmpty()) {
         render_->setImage(nullptr);
@@ -352,6 +358,17 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         return;
     }
     bool add = false;
+    if (const auto* n = g.node(reader.toStdString())) {
+        // Already reading that entry (a pipeline opened with its database):
+        // nothing to edit, the document stays as loaded.
+        const darkroom::Value* db = n->parameter("database");
+        const darkroom::Value* p = n->parameter("parameters");
+        QString path = db ? QString::fromStdString(db->asString()) : QString();
+        if (QFileInfo(path).isRelative() && !doc_->folder().isEmpty()) path = QDir(doc_->folder()).filePath(path);
+        if (db && p && QFileInfo(path).absoluteFilePath() == QFileInfo(database).absoluteFilePath() &&
+            QString::fromStdString(p->asString()) == parameters)
+            return;
+    }
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
         reader = doc_->uniqueName(QStringLiteral("CinemaReader"));

@@ -9,6 +9,7 @@
 #include <darkroom/framework/registry.h>
 
 #include <QMainWindow>
+#include <QTimer>
 
 #include "autosave.h"
 
@@ -26,6 +27,7 @@ namespace editor {
 
 class Autosave;
 class CinemaPanel;
+class ExplorerPanel;
 class Document;
 class Evaluation;
 class GraphScene;
@@ -49,6 +51,7 @@ public:
     RenderView* renderView() const { return render_; }
     Palette* palette() const { return palette_; }
     CinemaPanel* cinema() const { return cinema_; }
+    ExplorerPanel* explorer() const { return explorer_; }
     QuickAdd* quickAdd() const { return quickAdd_; }
     Evaluation* evaluation() const { return eval_; }
     QPlainTextEdit* log() const { return log_; }
@@ -60,7 +63,8 @@ public:
     // File operations; failures are logged and shown, never thrown.
     bool openPipeline(const QString& path);
     bool savePipeline(const QString& path);
-    bool openCinema(const QString& path);
+    // `select`: the entry to choose (CinemaReader's `parameters`), else the first.
+    bool openCinema(const QString& path, const QString& select = {});
     bool exportView(const QString& path);  // .exr: the buffer's channels; else the view as 8-bit
     // Adds a node of `type` and selects it: with its title at `scenePos`, or
     // right of the existing nodes.
@@ -72,7 +76,7 @@ public:
     void offerRecovery(const std::function<bool(const Recovery&)>& ask = {});
     void updateRecoverMenu();
     // Bumped when docks are added or renamed: an older saved layout is ignored.
-    static constexpr int kLayoutVersion = 2;
+    static constexpr int kLayoutVersion = 3;
     // Window geometry and dock layout to and from QSettings (closing saves,
     // the first show restores).
     void saveLayout() const;
@@ -102,6 +106,12 @@ private:
     bool maybeSave();
     bool recover(const Recovery& r);
     void buildHelpMenu();
+    void buildExplorer(const darkroom::Registry& registry);
+    QString explorerReader() const;  // the CinemaReader reading the explorer's database
+    void saveExplorerState();
+    void syncExplorerFromDocument();
+    void restoreExplorer();
+    void updateExplorerPipeline();
 
     Document* doc_;
     Autosave* autosave_;
@@ -111,6 +121,8 @@ private:
     QComboBox* channel_;
     Palette* palette_;
     CinemaPanel* cinema_;
+    ExplorerPanel* explorer_ = nullptr;
+    QTimer explorerPipelineTimer_;
     QuickAdd* quickAdd_;
     QPlainTextEdit* log_;
     Evaluation* eval_;
@@ -119,6 +131,7 @@ private:
     QMenu* recentMenu_ = nullptr;
     QMenu* recoverMenu_ = nullptr;
     QString shownNode_;
+    QString shownTarget_, shownPort_;  // the image output on screen (or asked for)
     QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
     bool restored_ = false;   // the layout came from QSettings
     bool waiting_ = false;    // the shown part waits for input: results in flight are not shown

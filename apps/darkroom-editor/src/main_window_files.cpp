@@ -6,6 +6,7 @@
 
 #include "cinema_panel.h"
 #include "display.h"
+#include "explorer_panel.h"
 #include "document.h"
 #include "graph_scene.h"
 #include "graph_view.h"
@@ -94,7 +95,7 @@ void MainWindow::buildMenus() {
     view->addAction(tr("Fit &graph"), this, [this] { graphView_->fitAll(); });
     view->addAction(tr("Fit &image"), QKeySequence(Qt::Key_F), render_, &RenderView::fit);
     view->addSeparator();
-    for (const char* name : {"graph", "palette", "cinema", "log"})
+    for (const char* name : {"graph", "palette", "cinema", "explorer", "log"})
         if (QDockWidget* d = dock(name)) view->addAction(d->toggleViewAction());
     updateRecentMenu();
     updateRecoverMenu();
@@ -112,6 +113,7 @@ bool MainWindow::openPipeline(const QString& path) {
     }
     addRecent(doc_->path());
     graphView_->fitAll();
+    restoreExplorer();
     statusBar()->showMessage(messages.isEmpty() ? tr("Opened %1").arg(path)
                                                 : tr("Opened %1 with %2 problems (see the log)").arg(path).arg(messages.size()),
                              8000);
@@ -130,17 +132,21 @@ bool MainWindow::savePipeline(const QString& path) {
     return true;
 }
 
-bool MainWindow::openCinema(const QString& path) {
+bool MainWindow::openCinema(const QString& path, const QString& select) {
     QString err;
-    if (!cinema_->open(path, &err)) {
+    if (!cinema_->open(path, &err, select)) {
         logMessage(err);
         statusBar()->showMessage(err, 10000);
         return false;
     }
-    if (QDockWidget* d = dock("cinema")) {
-        d->show();
-        d->raise();
-    }
+    explorer_->setDatabase(*cinema_->database(), cinema_->entries());
+    explorer_->setCurrent(cinema_->currentEntry());
+    updateExplorerPipeline();
+    for (const char* name : {"cinema", "explorer"})
+        if (QDockWidget* d = dock(name)) {
+            d->show();
+            d->raise();
+        }
     return true;
 }
 
@@ -301,7 +307,11 @@ bool MainWindow::restoreLayout() {
     const bool ok = restoreGeometry(s.value("layout/geometry").toByteArray()) &&
                     restoreState(s.value("layout/state").toByteArray(), kLayoutVersion);
     // The Cinema browser belongs to an open database, not to the last session.
-    if (QDockWidget* d = dock("cinema"); d && !cinema_->database()) d->hide();
+    for (const char* name : {"cinema", "explorer"})
+        if (QDockWidget* d = dock(name); d && !cinema_->database() && d->isVisible()) {
+            d->hide();
+            if (QString(name) == "explorer") dock("graph")->raise();  // its tab was the current one
+        }
     return ok;
 }
 
