@@ -21,6 +21,8 @@
 #include "cinema_entries.h"
 #include "cinema_panel.h"
 #include "document.h"
+#include "evaluation.h"
+#include "explorer_state.h"
 #include "explorer_panel.h"
 #include "image_grid.h"
 #include "main_window.h"
@@ -34,6 +36,9 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QScreen>
 #include <QScrollBar>
 #include <QStandardPaths>
 #include <QTest>
@@ -188,6 +193,45 @@ private:
     editor::ExplorerPanel* ex_;
 };
 
+// docs/editor.md's picture: a pipeline shading the entries (ColorMapping,
+// cool-to-warm), two axes brushed, the grid sorted by amplitude and showing
+// the pipeline's output, its first entry picked and in the render view.
+int picture(editor::MainWindow& w, const QString& cdb, const Options& o, const QString& file) {
+    const QString yaml = o.work + "/explorer-picture.yaml";
+    QFile f(yaml);
+    if (!f.open(QIODevice::WriteOnly)) return fail("cannot write " + yaml);
+    f.write(QStringLiteral("darkroom: 1\nnodes:\n  read:\n    type: CinemaReader\n    parameters:\n"
+                           "      database: %1\n  colour:\n    type: ColorMapping\n    parameters:\n"
+                           "      channel: value\n      colormap: cool-to-warm\n      range: manual\n"
+                           "      minimum: -1\n      maximum: 1\nedges:\n  - read.image -> colour.image\n")
+                .arg(QFileInfo(cdb).absoluteFilePath())
+                .toUtf8());
+    f.close();
+    if (!w.openPipeline(yaml) || !w.openCinema(cdb)) return fail("cannot open the pipeline or the database");
+    w.resizeDocks({w.dock("explorer")}, {w.height() * 46 / 100}, Qt::Vertical);
+    QTest::qWait(300);
+    editor::ExplorerPanel* ex = w.explorer();
+    QTest::qWait(600);  // the explorer takes the pipeline once the graph rests
+    editor::ExplorerState s;
+    s.brushes = {{"phi", "90", "180"}, {"amplitude", "0.55", "1"}};
+    s.sort = "amplitude";
+    s.descending = true;
+    s.pipeline = true;
+    ex->setState(s);
+    w.cinema()->selectEntry(ex->model().order().front());
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < 60000 && !(ex->cache()->idle() && !w.evaluation()->busy())) QTest::qWait(50);
+    QTest::qWait(500);
+    w.document()->undoStack()->setClean();
+    // What the X server shows: grab() leaves out what is drawn over the
+    // OpenGL render view.
+    const QPixmap shot = w.screen()->grabWindow(w.winId());
+    if (shot.isNull() || !shot.save(file)) return fail("cannot write " + file);
+    std::printf("wrote %s\n", qPrintable(file));
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -197,17 +241,19 @@ int main(int argc, char** argv) {
     cli.addHelpOption();
     cli.addOption({"work", "Folder for the generated database", "DIR", "bench-editor"});
     cli.addOption({"rows", "Entries in the database", "N", "10000"});
+    cli.addOption({"size", "Products' width and height in pixels", "PX", "32"});
     cli.addOption({"moves", "Mouse moves per brush gesture", "N", "60"});
     cli.addOption({"interval", "Milliseconds between moves and wheel notches", "MS", "16"});
-    cli.addOption({"screenshot", "Write a picture of the explorer to FILE and stop", "FILE"});
+    cli.addOption({"screenshot", "Write docs/editor.md's picture of the explorer to FILE and stop", "FILE"});
     cli.process(app);
     Options o;
     o.work = cli.value("work");
     o.rows = cli.value("rows").toInt();
+    o.size = cli.value("size").toInt();
     o.moves = cli.value("moves").toInt();
     o.interval = cli.value("interval").toInt();
 
-    const QString cdb = o.work + QStringLiteral("/explorer-%1.cdb").arg(o.rows);
+    const QString cdb = o.work + QStringLiteral("/explorer-%1-%2px.cdb").arg(o.rows).arg(o.size);
     QElapsedTimer gen;
     gen.start();
     QDir().mkpath(o.work);
@@ -236,6 +282,7 @@ int main(int argc, char** argv) {
     editor::MainWindow w(registry, problems);
     w.show();
     if (!QTest::qWaitForWindowExposed(&w)) return fail("the window was not exposed");
+    if (cli.isSet("screenshot")) return picture(w, cdb, o, cli.value("screenshot"));
     QElapsedTimer open;
     open.start();
     if (!w.openCinema(cdb)) return fail("cannot open " + cdb);
@@ -276,12 +323,6 @@ int main(int argc, char** argv) {
         }
         std::printf("a frame with nothing to compute (the plot repainted from its cached layers): median %.1f ms, max %.1f ms\n\n",
                     percentile(floor, 0.5), percentile(floor, 1.0));
-    }
-
-    if (cli.isSet("screenshot")) {
-        if (!w.grab().save(cli.value("screenshot"))) return fail("cannot write " + cli.value("screenshot"));
-        w.document()->undoStack()->setClean();
-        return 0;
     }
 
     // The grid of every entry.

@@ -112,11 +112,8 @@ std::vector<std::size_t> ImageGrid::visibleItems() const {
 }
 
 QString ImageGrid::caption(std::size_t item) const {
-    // Sorted: the value sorted by; else the entry's label.
-    if (model_->sortAxis() >= 0) {
-        const std::size_t a = std::size_t(model_->sortAxis());
-        return QString::fromStdString(model_->axes()[a].name) + QLatin1Char('=') + model_->text(a, item);
-    }
+    // Sorted: the value sorted by (the bar names the column); else the label.
+    if (model_->sortAxis() >= 0) return model_->text(std::size_t(model_->sortAxis()), item);
     return labels_.value(int(item));
 }
 

@@ -268,6 +268,12 @@ void MainWindow::scheduleEvaluation() {
     eval_->request(g, target, port, doc_->folder());
 }
 
+QString MainWindow::absoluteInput(const QString& path) const {
+    if (path.isEmpty() || !QFileInfo(path).isRelative() || doc_->folder().isEmpty())
+        return QFileInfo(path).absoluteFilePath();
+    return QFileInfo(QDir(doc_->folder()).filePath(path)).absoluteFilePath();
+}
+
 bool MainWindow::showWaiting(const QString& node, const QString& target) {
     std::map<QString, QString> waiting;  // node -> what it waits for
     QStringList lines;
@@ -358,16 +364,18 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         return;
     }
     bool add = false;
+    // The reader may name the database relative to the pipeline, the
+    // browser as it was opened: the same folder either way.
+    const QString folder = QFileInfo(database).absoluteFilePath();
+    auto readsDatabase = [&](const darkroom::Node& n) {
+        const darkroom::Value* db = n.parameter("database");
+        return db && absoluteInput(QString::fromStdString(db->asString())) == folder;
+    };
     if (const auto* n = g.node(reader.toStdString())) {
         // Already reading that entry (a pipeline opened with its database):
         // nothing to edit, the document stays as loaded.
-        const darkroom::Value* db = n->parameter("database");
         const darkroom::Value* p = n->parameter("parameters");
-        QString path = db ? QString::fromStdString(db->asString()) : QString();
-        if (QFileInfo(path).isRelative() && !doc_->folder().isEmpty()) path = QDir(doc_->folder()).filePath(path);
-        if (db && p && QFileInfo(path).absoluteFilePath() == QFileInfo(database).absoluteFilePath() &&
-            QString::fromStdString(p->asString()) == parameters)
-            return;
+        if (readsDatabase(*n) && p && QString::fromStdString(p->asString()) == parameters) return;
     }
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
@@ -384,8 +392,7 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
                                                          QPointF(NodeItem::width() / 2, 40)
                                                    : QPointF(used.left(), used.bottom() + 60));
         }
-        const darkroom::Value* db = gg.node(n)->parameter("database");
-        if (!db || QString::fromStdString(db->asString()) != database) gg.setParameter(n, "database", database.toStdString());
+        if (!readsDatabase(*gg.node(n))) gg.setParameter(n, "database", folder.toStdString());
         gg.setParameter(n, "parameters", parameters.toStdString());
     }, add ? QString() : QStringLiteral("cinema:") + reader);
     if (!err.isEmpty()) logMessage(err);

@@ -99,6 +99,8 @@ private:
     void scheduleEvaluation();
     void onEvaluated(const EvalResult& r);
     bool showWaiting(const QString& node, const QString& target);
+    // A path as a node's input means it: relative to the pipeline's folder.
+    QString absoluteInput(const QString& path) const;
     void onEntryChosen(const QString& database, const QString& parameters);
     void addRecent(const QString& path);
     void updateRecentMenu();

@@ -61,10 +61,7 @@ QString MainWindow::explorerReader() const {
     for (const auto& n : doc_->graph().nodes()) {
         if (n.type != "CinemaReader") continue;
         const darkroom::Value* db = n.parameter("database");
-        if (!db) continue;
-        QString path = QString::fromStdString(db->asString());
-        if (QFileInfo(path).isRelative() && !doc_->folder().isEmpty()) path = QDir(doc_->folder()).filePath(path);
-        if (QFileInfo(path).absoluteFilePath() != want) continue;
+        if (!db || absoluteInput(QString::fromStdString(db->asString())) != want) continue;
         const QString name = QString::fromStdString(n.name);
         if (name == selected) return name;
         if (found.isEmpty()) found = name;
@@ -113,8 +110,7 @@ void MainWindow::restoreExplorer() {
             logMessage(tr("%1 (node '%2'): %3").arg(doc_->path(), name, QString::fromUtf8(e.what())));
             return;
         }
-        QString path = QString::fromStdString(db->asString());
-        if (QFileInfo(path).isRelative()) path = QDir(doc_->folder()).filePath(path);
+        const QString path = absoluteInput(QString::fromStdString(db->asString()));
         const darkroom::Value* entry = n.parameter("parameters");
         if (!openCinema(path, entry ? QString::fromStdString(entry->asString()) : QString())) return;
         std::vector<std::string> problems;

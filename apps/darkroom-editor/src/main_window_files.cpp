@@ -134,7 +134,9 @@ bool MainWindow::savePipeline(const QString& path) {
 
 bool MainWindow::openCinema(const QString& path, const QString& select) {
     QString err;
-    if (!cinema_->open(path, &err, select)) {
+    // Absolute: the reader it drives resolves relative paths against the
+    // pipeline's folder, not the editor's working folder.
+    if (!cinema_->open(QFileInfo(path).absoluteFilePath(), &err, select)) {
         logMessage(err);
         statusBar()->showMessage(err, 10000);
         return false;

@@ -148,11 +148,14 @@ void ParallelCoordinates::drawAxes(QPainter& p) const {
         p.drawText(QRectF(x - 80, 2, 160, fm.height()), Qt::AlignHCenter, name);
         p.setFont(QFont());
         p.setPen(QColor(190, 192, 198));
+        // Labels may take most of the gap to the next axis.
+        const std::size_t axes = model_->axes().size();
+        const int room = axes > 1 ? std::max(kSide + 20, int((axisX(1) - axisX(0)) * 0.7)) : kSide + 20;
         auto label = [&](double unit, const QString& text) {
             // On a dark plate, readable over the polylines.
-            const QString shown = fm.elidedText(text, Qt::ElideRight, kSide + 20);
+            const QString shown = fm.elidedText(text, Qt::ElideRight, room);
             const double w = fm.horizontalAdvance(shown) + 4;
-            const bool last = a + 1 == model_->axes().size() && a > 0;  // its labels go left, inside the plot
+            const bool last = a + 1 == axes && a > 0;  // its labels go left, inside the plot
             const QRectF r(last ? x - 4 - w : x + 4, yOf(unit) - fm.height() / 2.0, w, fm.height());
             p.fillRect(r, QColor(30, 31, 34, 190));
             p.drawText(r.adjusted(2, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, shown);
