@@ -15,6 +15,7 @@
 #include "image_grid.h"
 #include "main_window.h"
 #include "parallel_coords.h"
+#include "polyline_raster.h"
 #include "preview_graph.h"
 #include "render_view.h"
 #include "test_support.h"
@@ -92,6 +93,7 @@ private slots:
     void gridShowsThePipelinesOutput();
     void selectionIsSavedWithThePipeline();
     void savedSelectionSurvivesTheLoadersRoundTrip();
+    void polylinesAreRasterisedWithoutGapsOrOverlaps();
 
 private:
     editor::ExplorerPanel* open();
@@ -459,6 +461,41 @@ void ExplorerTest::savedSelectionSurvivesTheLoadersRoundTrip() {
         QCOMPARE(editor::parseExplorerState(editor::explorerText(*read)), s);
         current = serializePipeline(g);
     }
+}
+
+void ExplorerTest::polylinesAreRasterisedWithoutGapsOrOverlaps() {
+    // Three axes at columns 10, 60, 70 of a 80 x 100 image; two polylines:
+    // a flat one at row 20, and a steep one from row 5 to row 95 and back.
+    editor::PolylineRaster r(80, 100, {10, 60, 70});
+    r.rasterise([](std::size_t gap, const editor::PolylineRaster::AddSegment& add) {
+        add(20, 20, 0.0f);
+        add(gap == 0 ? 5.0f : 95.0f, gap == 0 ? 95.0f : 5.0f, 1.0f);
+    }, 2);
+    const QImage img = r.toImage(0.01f, true, 0, 255);  // one line: opaque
+    auto alpha = [&](int x, int y) { return qAlpha(img.pixel(x, y)); };
+    // The flat line covers every column from the first axis to the last, once.
+    for (int x = 0; x < 80; ++x) QCOMPARE(alpha(x, 20) > 0, x >= 10 && x <= 70);
+    // The steep one has a pixel in every row it crosses, in each gap.
+    for (int y = 6; y < 95; ++y) {
+        if (y == 20) continue;  // the flat line's row
+        int first = 0, second = 0;
+        for (int x = 10; x < 60; ++x) first += alpha(x, y) > 0;
+        for (int x = 60; x <= 70; ++x) second += alpha(x, y) > 0;
+        QVERIFY2(first >= 1 && second >= 1, qPrintable(QStringLiteral("row %1: %2, %3").arg(y).arg(first).arg(second)));
+    }
+    // Counted once on the axis between two gaps (opacity grows with the count).
+    const QImage faint = r.toImage(10.0f, true, 0, 255);
+    QCOMPARE(qAlpha(faint.pixel(60, 20)), qAlpha(faint.pixel(30, 20)));
+    QVERIFY(qAlpha(faint.pixel(30, 20)) > 0);
+    // Colour by value: the flat line (0) and the steep one (1) differ.
+    QVERIFY(img.pixel(12, 20) != img.pixel(10, 5));
+    // The order of the lines does not matter.
+    editor::PolylineRaster swapped(80, 100, {10, 60, 70});
+    swapped.rasterise([](std::size_t gap, const editor::PolylineRaster::AddSegment& add) {
+        add(gap == 0 ? 5.0f : 95.0f, gap == 0 ? 95.0f : 5.0f, 1.0f);
+        add(20, 20, 0.0f);
+    }, 1);
+    QCOMPARE(swapped.toImage(0.01f, true, 0, 255), img);
 }
 
 QTEST_MAIN(ExplorerTest)

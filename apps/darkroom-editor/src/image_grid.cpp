@@ -17,6 +17,12 @@ constexpr int kPad = 6;
 }  // namespace
 
 ImageGrid::ImageGrid(QWidget* parent) : QAbstractScrollArea(parent) {
+    arrivals_.setSingleShot(true);
+    arrivals_.setInterval(50);
+    connect(&arrivals_, &QTimer::timeout, this, [this] {
+        viewport()->update(arrived_);
+        arrived_ = QRegion();
+    });
     setFocusPolicy(Qt::StrongFocus);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
@@ -28,10 +34,15 @@ void ImageGrid::setModel(const ExplorerModel* model, ThumbnailCache* cache, QStr
     if (cache_ != cache) {
         if (cache_) cache_->disconnect(this);
         cache_ = cache;
-        // A picture arrived: repaint its cell if it is on screen.
+        // A picture arrived: repaint its cell if it is on screen, at most
+        // every 50 ms (each frame composes the whole window, the render
+        // view's OpenGL included: pictures landing one by one would cost a
+        // frame each while the user scrolls).
         connect(cache_, &ThumbnailCache::ready, this, [this](std::size_t item) {
             const QRect r = cellRect(item);
-            if (!r.isEmpty() && r.intersects(viewport()->rect())) viewport()->update(r);
+            if (r.isEmpty() || !r.intersects(viewport()->rect())) return;
+            arrived_ |= r;
+            if (!arrivals_.isActive()) arrivals_.start();
         });
     }
     current_.reset();
@@ -119,6 +130,7 @@ QString ImageGrid::caption(std::size_t item) const {
 
 void ImageGrid::paintEvent(QPaintEvent*) {
     ++paints_;
+    arrived_ = QRegion();  // this paint shows them
     QPainter p(viewport());
     p.fillRect(viewport()->rect(), QColor(34, 35, 38));
     if (!model_ || !cache_) return;
@@ -166,7 +178,10 @@ void ImageGrid::resizeEvent(QResizeEvent* e) {
     updateScrollRange();
 }
 
-void ImageGrid::scrollContentsBy(int, int) { viewport()->update(); }
+void ImageGrid::scrollContentsBy(int, int) {
+    arrived_ = QRegion();  // cell rectangles moved; the full repaint shows them
+    viewport()->update();
+}
 
 void ImageGrid::setCurrent(std::optional<std::size_t> item) {
     if (item == current_) return;

@@ -5,7 +5,9 @@
 // screen below, to scroll into) each time it paints; 10,000 items cost what
 // the visible ones cost. A click (or the arrow keys) picks an item.
 #include <QAbstractScrollArea>
+#include <QRegion>
 #include <QStringList>
+#include <QTimer>
 
 #include <optional>
 #include <utility>
@@ -59,6 +61,8 @@ private:
     QStringList labels_;
     std::optional<std::size_t> current_;
     int paints_ = 0;
+    QTimer arrivals_;  // thumbnails that landed are painted together
+    QRegion arrived_;
 };
 
 }  // namespace editor

@@ -9,19 +9,20 @@
 namespace editor {
 
 PolylineRaster::PolylineRaster(int w, int h, std::vector<int> axisX)
-    : w_(std::max(1, w)), h_(std::max(1, h)), axisX_(std::move(axisX)), count_(std::size_t(w_) * std::size_t(h_), 0),
-      sum_(std::size_t(w_) * std::size_t(h_), 0.0f) {}
+    : w_(std::max(1, w)), h_(std::max(1, h)), axisX_(std::move(axisX)), cells_(std::size_t(w_) * std::size_t(h_)) {}
 
 void PolylineRaster::segment(int x0, float y0, int x1, float y1, float t, int lastColumn) {
     // Columns x0 .. lastColumn (the next gap owns x1 unless this is the last).
     const int dx = x1 - x0;
     const float dy = y1 - y0;
     if (dx <= 0 || x0 < 0 || lastColumn >= w_) return;
+    Cell* cells = cells_.data();
+    const std::size_t w = std::size_t(w_);
     auto plot = [&](int x, int y) {
-        if (y < 0 || y >= h_) return;
-        const std::size_t i = std::size_t(y) * std::size_t(w_) + std::size_t(x);
-        ++count_[i];
-        sum_[i] += t;
+        if (unsigned(y) >= unsigned(h_)) return;
+        Cell& c = cells[std::size_t(y) * w + std::size_t(x)];
+        ++c.count;
+        c.sum += t;
     };
     if (std::abs(dy) <= float(dx)) {
         // One pixel per column; the row rounded (+0.5, rows are >= 0 here).
@@ -32,19 +33,19 @@ void PolylineRaster::segment(int x0, float y0, int x1, float y1, float t, int la
         return;
     }
     // Steep: one pixel per row, so the line has no gaps.
-    const int ya = int(std::lround(y0)), yb = int(std::lround(y1));
+    const int ya = int(y0 + 0.5f), yb = int(y1 + 0.5f);
     const int step = yb > ya ? 1 : -1;
-    const float inv = float(dx) / dy;
-    for (int y = ya;; y += step) {
-        const int x = x0 + int(std::lround((float(y) - y0) * inv));
-        if (x <= lastColumn) plot(x, y);
+    const float inv = float(dx) / dy * float(step);  // columns per row step
+    float x = float(x0) + (float(ya) - y0) * (float(dx) / dy) + 0.5f;
+    for (int y = ya;; y += step, x += inv) {
+        const int ix = int(x);
+        if (ix <= lastColumn) plot(ix, y);
         if (y == yb) break;
     }
 }
 
 void PolylineRaster::rasterise(const std::function<void(std::size_t, const AddSegment&)>& each, int threads) {
-    std::fill(count_.begin(), count_.end(), 0u);
-    std::fill(sum_.begin(), sum_.end(), 0.0f);
+    std::fill(cells_.begin(), cells_.end(), Cell{});
     if (axisX_.size() < 2) return;
     const std::size_t gaps = axisX_.size() - 1;
     auto run = [&](std::size_t gap) {
@@ -76,8 +77,8 @@ QImage PolylineRaster::toImage(float scale, bool colour, QRgb grey, int maxAlpha
     for (int y = 0; y < h_; ++y) {
         auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
         for (int x = 0; x < w_; ++x) {
-            const std::size_t i = std::size_t(y) * std::size_t(w_) + std::size_t(x);
-            const std::uint32_t c = count_[i];
+            const Cell& cell = cells_[std::size_t(y) * std::size_t(w_) + std::size_t(x)];
+            const std::uint32_t c = cell.count;
             if (c == 0) {
                 row[x] = 0;
                 continue;
@@ -85,7 +86,7 @@ QImage PolylineRaster::toImage(float scale, bool colour, QRgb grey, int maxAlpha
             const int a = alpha[std::min<std::size_t>(c, alpha.size() - 1)];
             int r = qRed(grey), g = qGreen(grey), b = qBlue(grey);
             if (colour) {
-                const auto& e = table[std::size_t(std::clamp(int(sum_[i] / float(c) * 255.0f + 0.5f), 0, 255))];
+                const auto& e = table[std::size_t(std::clamp(int(cell.sum / float(c) * 255.0f + 0.5f), 0, 255))];
                 r = e[0], g = e[1], b = e[2];
             }
             row[x] = qRgba(r * a / 255, g * a / 255, b * a / 255, a);  // premultiplied

@@ -40,8 +40,11 @@ private:
     void segment(int x0, float y0, int x1, float y1, float t, int lastColumn);
     int w_, h_;
     std::vector<int> axisX_;
-    std::vector<std::uint32_t> count_;
-    std::vector<float> sum_;
+    struct Cell {
+        std::uint32_t count = 0;  // lines crossing the pixel
+        float sum = 0;            // of their colour values
+    };
+    std::vector<Cell> cells_;
 };
 
 }  // namespace editor
