@@ -132,7 +132,7 @@ public:
         const auto time = std::size_t(ex_->model().axisIndex("time"));
         std::vector<Gesture> out;
         // A new brush from the top of the amplitude axis down to its middle.
-        out.push_back(drag("new brush growing on amplitude (10,000 rows)", plot->pointOf(amplitude, 1.0),
+        out.push_back(drag("new brush growing on amplitude", plot->pointOf(amplitude, 1.0),
                            plot->pointOf(amplitude, 0.55)));
         // Moved down along the axis, by its middle.
         out.push_back(drag("brush moved along amplitude", plot->pointOf(amplitude, 0.78),
@@ -236,71 +236,26 @@ int picture(editor::MainWindow& w, const QString& cdb, const Options& o, const Q
     return 0;
 }
 
-}  // namespace
+// Where opening goes: the parts the browser and the explorer share.
+void printOpenParts(const QString& cdb) {
+    QElapsedTimer t;
+    t.start();
+    const auto db = darkroom::CinemaDatabase::open(cdb.toStdString());
+    const double read = t.nsecsElapsed() / 1e6;
+    t.restart();
+    const auto entries = editor::cinemaEntries(db);
+    const double list = t.nsecsElapsed() / 1e6;
+    t.restart();
+    const editor::ExplorerModel model(db, entries);
+    const double table = t.nsecsElapsed() / 1e6;
+    t.restart();
+    (void)db.describe();
+    std::fprintf(stderr, "open parts: data.csv %.0f ms, entries %.0f ms, explorer table %.0f ms, describe %.0f ms\n", read,
+                 list, table, t.nsecsElapsed() / 1e6);
+}
 
-int main(int argc, char** argv) {
-    QApplication app(argc, argv);
-    QStandardPaths::setTestModeEnabled(true);  // settings and autosaves out of the user's
-    QCommandLineParser cli;
-    cli.addHelpOption();
-    cli.addOption({"work", "Folder for the generated database", "DIR", "bench-editor"});
-    cli.addOption({"rows", "Entries in the database", "N", "10000"});
-    cli.addOption({"size", "Products' width and height in pixels", "PX", "32"});
-    cli.addOption({"moves", "Mouse moves per brush gesture", "N", "60"});
-    cli.addOption({"interval", "Milliseconds between moves and wheel notches", "MS", "16"});
-    cli.addOption({"screenshot", "Write docs/editor.md's picture of the explorer to FILE and stop", "FILE"});
-    cli.process(app);
-    Options o;
-    o.work = cli.value("work");
-    o.rows = cli.value("rows").toInt();
-    o.size = cli.value("size").toInt();
-    o.moves = cli.value("moves").toInt();
-    o.interval = cli.value("interval").toInt();
-
-    const QString cdb = o.work + QStringLiteral("/explorer-%1-%2px.cdb").arg(o.rows).arg(o.size);
-    QElapsedTimer gen;
-    gen.start();
-    QDir().mkpath(o.work);
-    guitest::ensureEnsemble(cdb.toStdString(), std::size_t(o.rows), o.size);
-    std::fprintf(stderr, "database ready in %.1f s: %s\n", gen.elapsed() / 1000.0, qPrintable(cdb));
-
-    {
-        // Where opening goes: the parts the browser and the explorer share.
-        QElapsedTimer t;
-        t.start();
-        const auto db = darkroom::CinemaDatabase::open(cdb.toStdString());
-        const double read = t.nsecsElapsed() / 1e6;
-        t.restart();
-        const auto entries = editor::cinemaEntries(db);
-        const double list = t.nsecsElapsed() / 1e6;
-        t.restart();
-        const editor::ExplorerModel model(db, entries);
-        const double table = t.nsecsElapsed() / 1e6;
-        t.restart();
-        (void)db.describe();
-        std::fprintf(stderr, "open parts: data.csv %.0f ms, entries %.0f ms, explorer table %.0f ms, describe %.0f ms\n",
-                     read, list, table, t.nsecsElapsed() / 1e6);
-    }
-    darkroom::Registry registry;
-    const auto problems = registry.loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
-    editor::MainWindow w(registry, problems);
-    w.show();
-    if (!QTest::qWaitForWindowExposed(&w)) return fail("the window was not exposed");
-    if (cli.isSet("screenshot")) return picture(w, cdb, o, cli.value("screenshot"));
-    QElapsedTimer open;
-    open.start();
-    if (!w.openCinema(cdb)) return fail("cannot open " + cdb);
-    const double openMs = open.elapsed();
-    QTest::qWait(500);
-    Bench bench(w, o);
-    editor::ExplorerPanel* ex = w.explorer();
-
-    std::printf("# darkroom-editor explorer, %d entries (%d x %d products), window %d x %d\n\n", o.rows, o.size, o.size,
-                w.width(), w.height());
-    std::printf("opened (data.csv, entries, plot) in %.0f ms; plot %d x %d, grid %d x %d (%d columns, %zu cells visible)\n\n",
-                openMs, ex->plot()->width(), ex->plot()->height(), ex->grid()->viewport()->width(),
-                ex->grid()->viewport()->height(), ex->grid()->columns(), ex->grid()->visibleItems().size());
-
+// The three gestures, then the frame with nothing to compute; every move's time.
+std::vector<double> reportBrushing(Bench& bench, editor::ExplorerPanel* ex, const Options& o) {
     std::printf("## Brushing: mouse move to plot and grid painted\n\n");
     std::printf("| gesture | moves | selected rows (min–max) | median ms | p90 ms | max ms | polylines drawn median ms |\n");
     std::printf("|---|---|---|---|---|---|---|\n");
@@ -329,6 +284,14 @@ int main(int argc, char** argv) {
                     percentile(floor, 0.5), percentile(floor, 1.0));
     }
 
+    return all;
+}
+
+// Decoded once page by page, then wheel down over all entries: the cache
+// holds a quarter, so the rest is made again on the way; then back up over
+// the rows still cached.
+void reportScrolling(Bench& bench, editor::ExplorerPanel* ex, const Options& o, std::vector<double>* frames,
+                     std::vector<double>* up) {
     // The grid of every entry.
     ex->model().setBrushes({});
     ex->plot()->selectionChanged();
@@ -336,13 +299,11 @@ int main(int argc, char** argv) {
     QTest::qWait(100);
     int pages = 0;
     const double rate = bench.decodeOnce(&pages);
-    // Down over all of them: the cache holds a quarter, so the rest is made
-    // again on the way; then back up over the rows still cached.
     int remade = 0, remadeUp = 0;
-    const std::vector<double> frames = bench.scroll(true, 0, &remade);
+    *frames = bench.scroll(true, 0, &remade);
     const int cachedRows = int(ex->cache()->count() / std::size_t(ex->grid()->columns())) -
                            2 * int(ex->grid()->visibleItems().size() / std::size_t(ex->grid()->columns()));
-    const std::vector<double> up = bench.scroll(false, std::max(1, cachedRows), &remadeUp);
+    *up = bench.scroll(false, std::max(1, cachedRows), &remadeUp);
     std::printf("## Scrolling the grid of %d entries\n\n", o.rows);
     std::printf("decoded once, page by page: %d pages, %.0f thumbnails/s; cache %zu thumbnails, %.0f MiB\n\n", pages, rate,
                 ex->cache()->count(), ex->cache()->bytes() / 1048576.0);
@@ -353,9 +314,64 @@ int main(int argc, char** argv) {
                     percentile(f, 0.99), percentile(f, 1.0),
                     long(std::count_if(f.begin(), f.end(), [](double x) { return x > 100; })));
     };
-    row("wheel down, one row per notch, top to end", frames, remade);
-    row("wheel up over the rows still cached", up, remadeUp);
+    row("wheel down, one row per notch, top to end", *frames, remade);
+    row("wheel up over the rows still cached", *up, remadeUp);
     std::printf("\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);  // settings and autosaves out of the user's
+    QCommandLineParser cli;
+    cli.addHelpOption();
+    cli.addOption({"work", "Folder for the generated database", "DIR", "bench-editor"});
+    cli.addOption({"rows", "Entries in the database", "N", "10000"});
+    cli.addOption({"size", "Products' width and height in pixels", "PX", "32"});
+    cli.addOption({"moves", "Mouse moves per brush gesture", "N", "60"});
+    cli.addOption({"interval", "Milliseconds between moves and wheel notches", "MS", "16"});
+    cli.addOption({"screenshot", "Write docs/editor.md's picture of the explorer to FILE and stop", "FILE"});
+    cli.process(app);
+    Options o;
+    o.work = cli.value("work");
+    o.rows = cli.value("rows").toInt();
+    o.size = cli.value("size").toInt();
+    o.moves = cli.value("moves").toInt();
+    o.interval = cli.value("interval").toInt();
+
+    const QString cdb = o.work + QStringLiteral("/explorer-%1-%2px.cdb").arg(o.rows).arg(o.size);
+    QElapsedTimer gen;
+    gen.start();
+    QDir().mkpath(o.work);
+    guitest::ensureEnsemble(cdb.toStdString(), std::size_t(o.rows), o.size);
+    std::fprintf(stderr, "database ready in %.1f s: %s\n", gen.elapsed() / 1000.0, qPrintable(cdb));
+
+    printOpenParts(cdb);
+    darkroom::Registry registry;
+    const auto problems = registry.loadPlugins({DARKROOM_BENCH_PLUGIN_DIR});
+    editor::MainWindow w(registry, problems);
+    w.show();
+    if (!QTest::qWaitForWindowExposed(&w)) return fail("the window was not exposed");
+    if (cli.isSet("screenshot")) return picture(w, cdb, o, cli.value("screenshot"));
+    QElapsedTimer open;
+    open.start();
+    if (!w.openCinema(cdb)) return fail("cannot open " + cdb);
+    const double openMs = open.elapsed();
+    QTest::qWait(500);
+    Bench bench(w, o);
+    editor::ExplorerPanel* ex = w.explorer();
+
+    std::printf("# darkroom-editor explorer, %d entries (%d x %d products), window %d x %d\n\n", o.rows, o.size, o.size,
+                w.width(), w.height());
+    std::printf("opened (data.csv, entries, plot) in %.0f ms; plot %d x %d, grid %d x %d (%d columns, %zu cells visible)\n\n",
+                openMs, ex->plot()->width(), ex->plot()->height(), ex->grid()->viewport()->width(),
+                ex->grid()->viewport()->height(), ex->grid()->columns(), ex->grid()->visibleItems().size());
+
+    const std::vector<double> all = reportBrushing(bench, ex, o);
+
+    std::vector<double> frames, up;
+    reportScrolling(bench, ex, o, &frames, &up);
     std::printf("RESULT brushing_median_ms=%.1f brushing_max_ms=%.1f scroll_max_frame_ms=%.1f scroll_median_frame_ms=%.1f "
                 "scroll_cached_max_frame_ms=%.1f\n",
                 percentile(all, 0.5), percentile(all, 1.0), percentile(frames, 1.0), percentile(frames, 0.5),

@@ -61,43 +61,9 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
     using T = darkroom::PortType;
     switch (port.type) {
     case T::Float:
-    case T::Int: {
-        spin_ = new QDoubleSpinBox;
-        const bool isInt = port.type == T::Int;
-        spin_->setDecimals(isInt ? 0 : 3);
-        spin_->setRange(port.minimum.value_or(-1e12), port.maximum.value_or(1e12));
-        spin_->setSingleStep(isInt ? 1 : 0.01);
-        spin_->setKeyboardTracking(false);
-        lay->addWidget(spin_, 1);
-        if (sliderRange(port)) {
-            slider_ = new QSlider(Qt::Horizontal);
-            slider_->setRange(0, isInt ? int(*port.maximum - *port.minimum) : kSliderSteps);
-            lay->addWidget(slider_, 2);
-            connect(slider_, &QSlider::sliderPressed, this, [this] { emit interaction(true); });
-            connect(slider_, &QSlider::sliderReleased, this, [this] { emit interaction(false); });
-            connect(slider_, &QSlider::valueChanged, this, [this, isInt](int s) {
-                if (updating_) return;
-                const double v = isInt ? *port_.minimum + s
-                                       : *port_.minimum + (*port_.maximum - *port_.minimum) * s / kSliderSteps;
-                spin_->setValue(v);  // emits through the spin box
-            });
-        }
-        if (!slider_)
-            if (auto* edit = spin_->findChild<QLineEdit*>()) {
-                edit->installEventFilter(this);
-                edit->setCursor(Qt::SizeHorCursor);
-            }
-        connect(spin_, &QDoubleSpinBox::valueChanged, this, [this, isInt](double v) {
-            if (slider_) {
-                QSignalBlocker b(slider_);
-                slider_->setValue(isInt ? int(v - *port_.minimum)
-                                        : int(std::lround((v - *port_.minimum) / (*port_.maximum - *port_.minimum) * kSliderSteps)));
-            }
-            if (updating_) return;
-            emit edited(isInt ? darkroom::Value(std::int64_t(std::llround(v))) : darkroom::Value(v));
-        });
+    case T::Int:
+        buildNumberBox(lay);
         break;
-    }
     case T::Bool:
         check_ = new QCheckBox;
         lay->addWidget(check_);
@@ -209,6 +175,43 @@ bool ParamWidget::eventFilter(QObject* watched, QEvent* e) {
         break;
     }
     return QWidget::eventFilter(watched, e);
+}
+
+void ParamWidget::buildNumberBox(QHBoxLayout* lay) {
+    spin_ = new QDoubleSpinBox;
+    const bool isInt = port_.type == darkroom::PortType::Int;
+    spin_->setDecimals(isInt ? 0 : 3);
+    spin_->setRange(port_.minimum.value_or(-1e12), port_.maximum.value_or(1e12));
+    spin_->setSingleStep(isInt ? 1 : 0.01);
+    spin_->setKeyboardTracking(false);
+    lay->addWidget(spin_, 1);
+    if (sliderRange(port_)) {
+        slider_ = new QSlider(Qt::Horizontal);
+        slider_->setRange(0, isInt ? int(*port_.maximum - *port_.minimum) : kSliderSteps);
+        lay->addWidget(slider_, 2);
+        connect(slider_, &QSlider::sliderPressed, this, [this] { emit interaction(true); });
+        connect(slider_, &QSlider::sliderReleased, this, [this] { emit interaction(false); });
+        connect(slider_, &QSlider::valueChanged, this, [this, isInt](int s) {
+            if (updating_) return;
+            const double v = isInt ? *port_.minimum + s
+                                   : *port_.minimum + (*port_.maximum - *port_.minimum) * s / kSliderSteps;
+            spin_->setValue(v);  // emits through the spin box
+        });
+    }
+    if (!slider_)
+        if (auto* edit = spin_->findChild<QLineEdit*>()) {
+            edit->installEventFilter(this);
+            edit->setCursor(Qt::SizeHorCursor);
+        }
+    connect(spin_, &QDoubleSpinBox::valueChanged, this, [this, isInt](double v) {
+        if (slider_) {
+            QSignalBlocker b(slider_);
+            slider_->setValue(isInt ? int(v - *port_.minimum)
+                                    : int(std::lround((v - *port_.minimum) / (*port_.maximum - *port_.minimum) * kSliderSteps)));
+        }
+        if (updating_) return;
+        emit edited(isInt ? darkroom::Value(std::int64_t(std::llround(v))) : darkroom::Value(v));
+    });
 }
 
 void ParamWidget::buildChannelBox(QHBoxLayout* lay) {

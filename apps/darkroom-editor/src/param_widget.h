@@ -45,6 +45,7 @@ protected:
 
 private:
     void emitText(const QString& text);
+    void buildNumberBox(QHBoxLayout* lay);  // spin box, and a slider for a finite range
     void buildChannelBox(QHBoxLayout* lay);
     double scrubStep(double start) const;
     bool pressed_ = false, scrubbing_ = false;
