@@ -158,16 +158,17 @@ void FirstHourTest::cinemaLabelsAndSlidersShowReadableValues() {
     for (int i = 0; i < 3; ++i)
         writeImage(*test::makeImage(8, 8, {"R", "G", "B"}, [i](int, int, int) { return i / 2.0f; }),
                    cdb + "/e" + std::to_string(i) + ".exr");
-    test::writeText(cdb + "/data.csv", "time,kind,FILE\n0.000000E+00,a,e0.exr\n2.500000E-01,a,e1.exr\n"
-                                       "1.250000E+03,b,e2.exr\n");
+    test::writeText(cdb + "/data.csv", "time,kind,run,FILE\n0.000000E+00,a,007,e0.exr\n2.500000E-01,a,008,e1.exr\n"
+                                       "1.250000E+03,b,009,e2.exr\n");
     QVERIFY(w_->openCinema(QString::fromStdString(cdb)));
     QListWidget* list = w_->cinema()->thumbnails();
     QCOMPARE(list->count(), 3);
-    QCOMPARE(list->item(0)->text(), QString("time=0, kind=a"));
-    QCOMPARE(list->item(1)->text(), QString("time=0.25, kind=a"));
-    QCOMPARE(list->item(2)->text(), QString("time=1250, kind=b"));
+    // Integers stay as written: a padded run number is an identifier.
+    QCOMPARE(list->item(0)->text(), QString("time=0, kind=a, run=007"));
+    QCOMPARE(list->item(1)->text(), QString("time=0.25, kind=a, run=008"));
+    QCOMPARE(list->item(2)->text(), QString("time=1250, kind=b, run=009"));
     // The reader still gets the values as written (they find the row exactly).
-    QCOMPARE(w_->cinema()->entries()[1].parameters, QString("time=2.500000E-01, kind=a"));
+    QCOMPARE(w_->cinema()->entries()[1].parameters, QString("time=2.500000E-01, kind=a, run=008"));
 
     // The slider shows its value beside it, and follows a chosen entry.
     auto* slider = qobject_cast<QSlider*>(w_->cinema()->control("time"));
@@ -179,6 +180,7 @@ void FirstHourTest::cinemaLabelsAndSlidersShowReadableValues() {
     QCOMPARE(value->text(), QString("0.25"));
     list->setCurrentRow(2);
     QCOMPARE(value->text(), QString("1250"));
+    QCOMPARE(w_->cinema()->findChild<QLabel*>("value:run")->text(), QString("009"));
     QVERIFY(guitest::waitIdle(*w_));
     QVERIFY(guitest::screenshot(w_->dock("cinema"), "firsthour-cinema-values"));
 }

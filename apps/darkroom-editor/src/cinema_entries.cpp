@@ -16,6 +16,8 @@
 namespace editor {
 
 QString readableValue(const std::string& cell) {
+    // Integers stay as written: "012" is often an identifier, padded.
+    if (cell.find_first_of(".eE") == std::string::npos) return QString::fromStdString(cell);
     const char* begin = cell.data();
     const char* end = begin + cell.size();
     while (begin < end && *begin == ' ') ++begin;
@@ -29,9 +31,14 @@ QString readableValue(const std::string& cell) {
 }
 
 QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row) {
+    // A composable image set's CIS columns describe channels and layers.
+    const bool composable = darkroom::isComposableImageSet(db);
     QStringList parts;
-    for (std::size_t c : db.parameterColumns())
-        parts << QString::fromStdString(db.columns()[c].name) + QLatin1Char('=') + readableValue(db.cell(row, c));
+    for (std::size_t c : db.parameterColumns()) {
+        const std::string& name = db.columns()[c].name;
+        if (composable && name.rfind("CIS", 0) == 0) continue;
+        parts << QString::fromStdString(name) + QLatin1Char('=') + readableValue(db.cell(row, c));
+    }
     return parts.join(QStringLiteral(", "));
 }
 
@@ -43,9 +50,9 @@ std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
             for (const auto& layer : image.layers) {
                 CinemaEntry e;
                 e.parameters = QString::fromStdString(layer.query);
-                e.label = QString::fromStdString(layer.parameters.empty() ? image.id + "/" + layer.id
-                                                                          : layer.parameters);
                 e.row = layer.channels.empty() ? 0 : layer.channels.front().row;
+                e.label = layer.parameters.empty() ? QString::fromStdString(image.id + "/" + layer.id)
+                                                   : readableLabel(db, e.row);
                 entries.push_back(std::move(e));
             }
         return entries;

@@ -27,10 +27,12 @@ struct CinemaEntry {
     std::size_t row = 0; // its first data.csv row (drives the sliders)
 };
 
-// A cell as a person reads it: a number in its shortest exact form
-// ("2.500000E-01" -> "0.25", "1.250000E+03" -> "1250"), other text as is.
+// A cell as a person reads it: a decimal number in its shortest exact form
+// ("2.500000E-01" -> "0.25", "1.250000E+03" -> "1250"); integers ("012",
+// often padded identifiers) and other text as written.
 QString readableValue(const std::string& cell);
-// "time=0.25, kind=a": the row's parameter columns, values readable.
+// "time=0.25, kind=a": the row's parameter columns (a composable image
+// set's without its CIS columns), values readable.
 QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row);
 
 // One entry per data.csv row (labelled readably; `parameters` as written,
