@@ -28,7 +28,9 @@
 
 #include <QClipboard>
 #include <QComboBox>
+#include <QDir>
 #include <QDirIterator>
+#include <QFileInfo>
 #include <QDockWidget>
 #include <QLabel>
 #include <QProcess>
@@ -94,6 +96,7 @@ private slots:
     void selectionIsSavedWithThePipeline();
     void savedSelectionSurvivesTheLoadersRoundTrip();
     void polylinesAreRasterisedWithoutGapsOrOverlaps();
+    void aDatabaseOpenedByARelativePathIsFoundByTheReader();
 
 private:
     editor::ExplorerPanel* open();
@@ -496,6 +499,24 @@ void ExplorerTest::polylinesAreRasterisedWithoutGapsOrOverlaps() {
         add(20, 20, 0.0f);
     }, 1);
     QCOMPARE(swapped.toImage(0.01f, true, 0, 255), img);
+}
+
+void ExplorerTest::aDatabaseOpenedByARelativePathIsFoundByTheReader() {
+    // The pipeline in one folder, the database named relative to the
+    // working folder (as on a command line): the reader must still find it.
+    QDir().mkpath(QString::fromStdString(dir_->file("pipelines")));
+    test::writeText(dir_->file("pipelines/p.yaml"), "darkroom: 1\nnodes:\n  read:\n    type: CinemaReader\nedges: []\n");
+    QVERIFY(w_->openPipeline(QString::fromStdString(dir_->file("pipelines/p.yaml"))));
+    const QString before = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(QFileInfo(QString::fromStdString(ensemble())).absolutePath()));
+    const bool opened = w_->openCinema(QFileInfo(QString::fromStdString(ensemble())).fileName());
+    QDir::setCurrent(before);
+    QVERIFY(opened);
+    QVERIFY(guitest::waitIdle(*w_));
+    QVERIFY2(w_->renderView()->message().isEmpty(), qPrintable(w_->renderView()->message()));
+    QVERIFY(w_->renderView()->image());
+    QCOMPARE(w_->renderView()->image()->hostFloat("row")[0], 0.0f);
+    QVERIFY(w_->explorer()->hasDatabase());
 }
 
 QTEST_MAIN(ExplorerTest)
