@@ -7,6 +7,8 @@
 #include "render_view.h"
 
 #include <QDir>
+#include <QScreen>
+#include <QWindow>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -48,7 +50,17 @@ bool waitIdle(editor::MainWindow& w, int ms) {
 }
 
 bool screenshot(QWidget* widget, const QString& name) {
-    return widget->grab().save(QStringLiteral(DARKROOM_GUI_ARTIFACTS "/") + name + ".png");
+    const QString path = QStringLiteral(DARKROOM_GUI_ARTIFACTS "/") + name + ".png";
+    // What the X server shows: QWidget::grab() leaves out what QPainter
+    // draws over an OpenGL widget (the render view's messages).
+    QWidget* top = widget->window();
+    if (widget->isVisible() && top->windowHandle() && top->windowHandle()->isExposed()) {
+        QCoreApplication::processEvents();
+        const QPoint at = widget->mapTo(top, QPoint(0, 0));
+        const QPixmap shot = top->screen()->grabWindow(top->winId(), at.x(), at.y(), widget->width(), widget->height());
+        if (!shot.isNull()) return shot.save(path);
+    }
+    return widget->grab().save(path);
 }
 
 QPoint portPos(editor::MainWindow& w, const QString& node, const QString& port, bool output) {

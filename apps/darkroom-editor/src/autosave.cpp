@@ -14,6 +14,7 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <optional>
 #include <csignal>
 #include <cerrno>
 #include <cstring>
@@ -25,6 +26,17 @@ namespace {
 constexpr const char* kHeader = "# darkroom-editor autosave of: ";
 
 bool processAlive(qint64 pid) { return pid > 0 && (::kill(pid_t(pid), 0) == 0 || errno == EPERM); }
+
+std::optional<Recovery> readRecovery(const QFileInfo& f) {
+    QFile file(f.absoluteFilePath());
+    if (!file.open(QIODevice::ReadOnly)) return std::nullopt;
+    const QString first = QString::fromUtf8(file.readLine()).trimmed();
+    Recovery r;
+    r.file = f.absoluteFilePath();
+    if (first.startsWith(kHeader)) r.originalPath = first.mid(int(std::strlen(kHeader)));
+    r.savedAt = f.lastModified().toString("yyyy-MM-dd hh:mm:ss");
+    return r;
+}
 
 }  // namespace
 
@@ -67,6 +79,7 @@ void Autosave::discard() {
     if (!file_.isEmpty()) QFile::remove(file_);
 }
 
+
 std::vector<Recovery> Autosave::leftBehind() {
     std::vector<Recovery> out;
     const QDir dir(folder());
@@ -74,16 +87,28 @@ std::vector<Recovery> Autosave::leftBehind() {
         bool ok = false;
         const qint64 pid = f.completeBaseName().toLongLong(&ok);
         if (!ok || pid == QCoreApplication::applicationPid() || processAlive(pid)) continue;
-        QFile file(f.absoluteFilePath());
-        if (!file.open(QIODevice::ReadOnly)) continue;
-        const QString first = QString::fromUtf8(file.readLine()).trimmed();
-        Recovery r;
-        r.file = f.absoluteFilePath();
-        if (first.startsWith(kHeader)) r.originalPath = first.mid(int(std::strlen(kHeader)));
-        r.savedAt = f.lastModified().toString("yyyy-MM-dd hh:mm:ss");
-        out.push_back(r);
+        if (auto r = readRecovery(f)) out.push_back(*r);
     }
     return out;
+}
+
+std::vector<Recovery> Autosave::setAside() {
+    std::vector<Recovery> out;
+    for (const QFileInfo& f : QDir(folder() + "/older").entryInfoList({"*.yaml"}, QDir::Files, QDir::Time))
+        if (auto r = readRecovery(f)) out.push_back(*r);
+    return out;
+}
+
+void Autosave::putAside(const Recovery& r) {
+    const QString older = folder() + "/older";
+    if (!QDir().mkpath(older)) return;
+    // Named by when it was written, so set-aside files never collide.
+    const QFileInfo f(r.file);
+    QString target = older + "/" + f.lastModified().toString("yyyyMMdd-hhmmss") + "-" + f.fileName();
+    for (int i = 2; QFile::exists(target); ++i)
+        target = older + "/" + f.lastModified().toString("yyyyMMdd-hhmmss") + "-" + QString::number(i) + "-" + f.fileName();
+    // rename() keeps the modification time, which orders the list.
+    QFile::rename(r.file, target);
 }
 
 bool Autosave::restore(const Recovery& r, Document* doc, QStringList& messages) {

@@ -4,8 +4,10 @@
 // with unsaved changes is written to an autosave file a second after every
 // edit: <app data>/autosave/<pid>.yaml, atomically, the pipeline's own path in
 // its first line. A clean exit, a save or undoing back to the saved state
-// removes it. At the next start, autosaves of editors that are no longer
-// running are offered back.
+// removes it. At the next start, the autosave of the editor that ended last
+// without a clean exit (the session that crashed) is offered back; older
+// ones left behind were offered at earlier starts, or crashed beside it, and
+// are set aside into <autosave>/older, listed under File > Recover autosave.
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -42,6 +44,11 @@ public:
     static bool restore(const Recovery& r, Document* doc, QStringList& messages);
     // Removes an autosave file the user chose not to restore.
     static void drop(const Recovery& r);
+    // Moves an autosave into the set-aside folder: no longer offered at a
+    // start, still restorable from the File menu.
+    static void putAside(const Recovery& r);
+    // The set-aside autosaves, newest first.
+    static std::vector<Recovery> setAside();
     static QString folder();
 
 private:

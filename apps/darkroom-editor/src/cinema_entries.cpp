@@ -8,7 +8,39 @@
 #include <darkroom/core/registry.h>
 #include <darkroom/core/run_filter.h>
 
+#include <QStringList>
+
+#include <charconv>
+#include <cmath>
+
 namespace editor {
+
+QString readableValue(const std::string& cell) {
+    // Integers stay as written: "012" is often an identifier, padded.
+    if (cell.find_first_of(".eE") == std::string::npos) return QString::fromStdString(cell);
+    const char* begin = cell.data();
+    const char* end = begin + cell.size();
+    while (begin < end && *begin == ' ') ++begin;
+    if (begin < end && *begin == '+') ++begin;  // from_chars takes no plus sign
+    double v = 0;
+    const auto [at, ec] = std::from_chars(begin, end, v);
+    if (ec != std::errc() || at != end || !std::isfinite(v)) return QString::fromStdString(cell);
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest that reads back exactly
+    return QString::fromLatin1(buf, int(res.ptr - buf));
+}
+
+QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row) {
+    // A composable image set's CIS columns describe channels and layers.
+    const bool composable = darkroom::isComposableImageSet(db);
+    QStringList parts;
+    for (std::size_t c : db.parameterColumns()) {
+        const std::string& name = db.columns()[c].name;
+        if (composable && name.rfind("CIS", 0) == 0) continue;
+        parts << QString::fromStdString(name) + QLatin1Char('=') + readableValue(db.cell(row, c));
+    }
+    return parts.join(QStringLiteral(", "));
+}
 
 std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
     std::vector<CinemaEntry> entries;
@@ -18,15 +50,15 @@ std::vector<CinemaEntry> cinemaEntries(const darkroom::CinemaDatabase& db) {
             for (const auto& layer : image.layers) {
                 CinemaEntry e;
                 e.parameters = QString::fromStdString(layer.query);
-                e.label = QString::fromStdString(layer.parameters.empty() ? image.id + "/" + layer.id
-                                                                          : layer.parameters);
                 e.row = layer.channels.empty() ? 0 : layer.channels.front().row;
+                e.label = layer.parameters.empty() ? QString::fromStdString(image.id + "/" + layer.id)
+                                                   : readableLabel(db, e.row);
                 entries.push_back(std::move(e));
             }
         return entries;
     }
     for (std::size_t r = 0; r < db.rowCount(); ++r)
-        entries.push_back({QString::fromStdString(db.entryName(r)), QString::fromStdString(db.formatParameters(r)), r});
+        entries.push_back({readableLabel(db, r), QString::fromStdString(db.formatParameters(r)), r});
     return entries;
 }
 

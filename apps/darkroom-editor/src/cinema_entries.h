@@ -27,7 +27,16 @@ struct CinemaEntry {
     std::size_t row = 0; // its first data.csv row (drives the sliders)
 };
 
-// One entry per data.csv row ("phi=30, theta=45", as --foreach sets them);
+// A cell as a person reads it: a decimal number in its shortest exact form
+// ("2.500000E-01" -> "0.25", "1.250000E+03" -> "1250"); integers ("012",
+// often padded identifiers) and other text as written.
+QString readableValue(const std::string& cell);
+// "time=0.25, kind=a": the row's parameter columns (a composable image
+// set's without its CIS columns), values readable.
+QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row);
+
+// One entry per data.csv row (labelled readably; `parameters` as written,
+// as --foreach sets them, so they find the row exactly);
 // in a composable image set, whose rows are single channels, one entry per
 // layer ("CISImage=i000, CISLayer=l000"), since that is what CinemaReader
 // assembles into one image. Throws darkroom::Error on a malformed set.

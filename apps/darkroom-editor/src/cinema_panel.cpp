@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPointer>
@@ -51,7 +52,7 @@ QWidget* CinemaPanel::control(const QString& column) const {
     return nullptr;
 }
 
-bool CinemaPanel::open(const QString& path, QString* error) {
+bool CinemaPanel::open(const QString& path, QString* error, const QString& select) {
     std::vector<CinemaEntry> entries;
     try {
         auto db = darkroom::CinemaDatabase::open(path.toStdString());
@@ -77,20 +78,40 @@ bool CinemaPanel::open(const QString& path, QString* error) {
         // layers; the browser's entries are layers, chosen by the others.
         if (composable_ && QString::fromStdString(col.name).startsWith(QLatin1String("CIS"))) continue;
         QWidget* w;
+        QWidget* row = nullptr;
         if (col.numeric && col.distinct.size() > 1) {
             auto* s = new QSlider(Qt::Horizontal);
             s->setRange(0, int(col.distinct.size()) - 1);
             s->setPageStep(1);
+            // The value beside the slider, readable, wide enough for the
+            // longest one so the slider does not jump.
+            auto* value = new QLabel;
+            value->setObjectName(QStringLiteral("value:") + QString::fromStdString(col.name));
+            QStringList values;
+            int wide = 0;
+            for (const auto& d : col.distinct) {
+                values << readableValue(d);
+                wide = std::max(wide, fontMetrics().horizontalAdvance(values.back()));
+            }
+            value->setMinimumWidth(wide + 4);
+            value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            connect(s, &QSlider::valueChanged, value, [value, values](int i) { value->setText(values.value(i)); });
+            value->setText(values.front());
             connect(s, &QSlider::valueChanged, this, &CinemaPanel::controlsChanged);
+            row = new QWidget;
+            auto* h = new QHBoxLayout(row);
+            h->setContentsMargins(0, 0, 0, 0);
+            h->addWidget(s, 1);
+            h->addWidget(value);
             w = s;
         } else {
             auto* b = new QComboBox;
-            for (const auto& v : col.distinct) b->addItem(QString::fromStdString(v));
+            for (const auto& v : col.distinct) b->addItem(readableValue(v));
             connect(b, &QComboBox::currentIndexChanged, this, &CinemaPanel::controlsChanged);
             w = b;
         }
         controls_.emplace_back(c, w);
-        form_->addRow(QString::fromStdString(col.name), w);
+        form_->addRow(QString::fromStdString(col.name), row ? row : w);
     }
     updating_ = true;
     list_->clear();
@@ -105,7 +126,15 @@ bool CinemaPanel::open(const QString& path, QString* error) {
     }
     updating_ = false;
     startThumbnails();
-    selectEntry(0);
+    std::size_t first = 0;
+    if (!select.isEmpty()) {
+        for (std::size_t e = 0; e < entries_.size(); ++e)
+            if (entries_[e].parameters == select) {
+                first = e;
+                break;
+            }
+    }
+    selectEntry(first);
     return true;
 }
 

@@ -27,7 +27,9 @@ class CinemaPanel : public QWidget {
 public:
     explicit CinemaPanel(const darkroom::Registry& registry, QWidget* parent = nullptr);
     ~CinemaPanel() override;
-    bool open(const QString& path, QString* error);
+    // `select`: the entry to choose first (CinemaReader's `parameters`, as a
+    // loaded pipeline has it), else the first entry.
+    bool open(const QString& path, QString* error, const QString& select = {});
     const darkroom::CinemaDatabase* database() const { return db_ ? &*db_ : nullptr; }
     const std::vector<CinemaEntry>& entries() const { return entries_; }
     std::size_t currentEntry() const { return entry_; }

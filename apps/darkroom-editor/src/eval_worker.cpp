@@ -81,6 +81,7 @@ std::optional<EvalResult> EvalWorker::evaluate(const EvalJob& job) {
     r.show = job.show;
     auto stale = [this, &job] { return stopping_ || stale_(job); };
     for (;;) {
+        bool invalid = false;
         try {
             adapter_.setInputBase(job.inputBase.toStdString());
             if (job.level > 0) {
@@ -96,6 +97,7 @@ std::optional<EvalResult> EvalWorker::evaluate(const EvalJob& job) {
             if (!stale()) continue;
             return std::nullopt;
         } catch (const darkroom::GraphError& e) {
+            invalid = true;  // nothing ran: the last profile is another graph's
             r.error = QString::fromStdString(e.what());
             for (const auto& d : e.diagnostics())
                 if (!d.node.empty()) r.errorNodes << QString::fromStdString(d.node);
@@ -105,6 +107,10 @@ std::optional<EvalResult> EvalWorker::evaluate(const EvalJob& job) {
                 if (r.error.contains(QString::fromStdString("node '" + n.name + "'")))
                     r.errorNodes << QString::fromStdString(n.name);
             if (r.error.isEmpty()) r.error = QStringLiteral("evaluation failed");
+        }
+        if (job.level == 0 && job.show && !invalid) {
+            for (auto& [node, channels] : adapter_.inputChannels(*job.graph, upstreamOf(*job.graph, job.node.toStdString())))
+                for (const auto& c : channels) r.inputChannels[QString::fromStdString(node)] << QString::fromStdString(c);
         }
         return r;
     }

@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -41,6 +42,9 @@ struct EvalResult {
     bool show = true;
     QString error;            // empty on success
     QStringList errorNodes;   // nodes the error names (shown red)
+    // Full-resolution frames: the channels flowing into each evaluated node
+    // that has a channel port (its drop-down).
+    std::map<QString, QStringList> inputChannels;
 };
 
 class EvalWorker : public QObject {

@@ -1,8 +1,11 @@
 #include "evaluator_adapter.h"
 
+#include "channel_port.h"
+
 #include <darkroom/error.h>
 #include <darkroom/core/evaluator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <set>
@@ -54,7 +57,28 @@ std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::str
     return order;
 }
 
+std::map<std::string, std::string> waitingForInput(const darkroom::Graph& graph, const std::string& node) {
+    std::map<std::string, std::string> out;
+    for (const auto& name : upstreamOf(graph, node)) {
+        const darkroom::Node* n = graph.node(name);
+        if (!n || n->placeholder) continue;
+        for (const auto& in : graph.ports(*n).inputs)
+            if (in.isImage() && !in.optional && graph.edgesInto(name, in.name).empty()) {
+                out[name] = in.name;
+                break;
+            }
+    }
+    return out;
+}
+
 EvaluatorAdapter::EvaluatorAdapter() : evaluator_(std::make_shared<darkroom::Evaluator>()) {}
+
+EvaluatorAdapter::EvaluatorAdapter(int threads, std::size_t cacheBytes) {
+    darkroom::EvaluatorOptions o;
+    o.threads = threads;
+    o.cacheBytes = cacheBytes;
+    evaluator_ = std::make_shared<darkroom::Evaluator>(o);
+}
 EvaluatorAdapter::~EvaluatorAdapter() = default;
 
 void EvaluatorAdapter::setInputBase(const std::string& folder) {
@@ -121,6 +145,37 @@ darkroom::BufferPtr EvaluatorAdapter::evaluate(const darkroom::Graph& graph, con
         }
     }
     return image;
+}
+
+std::map<std::string, std::vector<std::string>> EvaluatorAdapter::inputChannels(const darkroom::Graph& graph,
+                                                                               const std::vector<std::string>& nodes) {
+    std::set<std::string> finished;
+    for (const auto& p : evaluator_->lastProfile()) finished.insert(p.node);
+    std::map<std::string, std::vector<std::string>> out;
+    for (const auto& name : nodes) {
+        const darkroom::Node* n = graph.node(name);
+        if (!n || n->placeholder) continue;
+        const auto& ports = graph.ports(*n);
+        if (std::none_of(ports.inputs.begin(), ports.inputs.end(), isChannelPort)) continue;
+        std::vector<std::string> channels;
+        for (const auto& in : ports.inputs) {
+            if (!in.isImage()) continue;
+            for (const auto& e : graph.edgesInto(name, in.name)) {
+                if (!finished.count(e.from.node)) continue;
+                try {
+                    const darkroom::BufferPtr b = evaluator_->evaluateImage(graph, e.from.node, e.from.port);
+                    if (!b) continue;
+                    for (const auto& c : b->channels())
+                        if (std::find(channels.begin(), channels.end(), c.name) == channels.end())
+                            channels.push_back(c.name);
+                } catch (const std::exception&) {
+                    // Not an image after all, or evicted and failing now: no list.
+                }
+            }
+        }
+        if (!channels.empty()) out[name] = std::move(channels);
+    }
+    return out;
 }
 
 double EvaluatorAdapter::predictSeconds(const darkroom::Graph& graph, const std::string& node) const {

@@ -49,6 +49,9 @@ struct FrameProfile {
 class EvaluatorAdapter {
 public:
     EvaluatorAdapter();
+    // `threads` per filter (0: all) and a cap on cached outputs, for
+    // background work (the explorer's pipeline thumbnails).
+    EvaluatorAdapter(int threads, std::size_t cacheBytes);
     ~EvaluatorAdapter();
     EvaluatorAdapter(const EvaluatorAdapter&) = delete;
     EvaluatorAdapter& operator=(const EvaluatorAdapter&) = delete;
@@ -69,6 +72,13 @@ public:
     // negative when one of them never ran here (no estimate).
     double predictSeconds(const darkroom::Graph& graph, const std::string& node) const;
 
+    // For each of `nodes` with a channel port (channel_port.h): the channels
+    // of the images flowing into it, from this evaluator's cache. Only
+    // inputs whose node finished in the last evaluation are looked at, so
+    // nothing runs again (a failed node is not retried).
+    std::map<std::string, std::vector<std::string>> inputChannels(const darkroom::Graph& graph,
+                                                                  const std::vector<std::string>& nodes);
+
     // Thread-safe counters (tests and statistics).
     std::uint64_t executions(const std::string& node) const;
     double lastSeconds(const std::string& node) const;
@@ -85,5 +95,10 @@ private:
 
 // The nodes `node` depends on (itself included), in dependency order.
 std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node);
+
+// Nodes `node` depends on that wait for input: a required image input is
+// not connected (a node just added). Node -> which input. Evaluating would
+// only fail validation; the editor says "waiting for input" instead.
+std::map<std::string, std::string> waitingForInput(const darkroom::Graph& graph, const std::string& node);
 
 }  // namespace editor

@@ -59,6 +59,18 @@ void GraphScene::setErrors(const std::map<QString, QString>& errors) {
     }
 }
 
+void GraphScene::setWaiting(const std::map<QString, QString>& waiting) {
+    for (auto& [name, item] : nodes_) {
+        const auto it = waiting.find(name);
+        item->setWaiting(it == waiting.end() ? QString() : it->second);
+    }
+}
+
+void GraphScene::setInputChannels(const std::map<QString, QStringList>& channels) {
+    for (const auto& [name, list] : channels)
+        if (NodeItem* item = nodeItem(name)) item->setChannelChoices(list);
+}
+
 void GraphScene::setTimings(const std::map<QString, Timing>& timings, bool preview) {
     for (auto& [name, item] : nodes_) {
         const auto it = timings.find(name);
@@ -84,6 +96,9 @@ void GraphScene::sync() {
         alive.insert(name);
         NodeItem* item = nodeItem(name);
         if (item && item->typeName() != n.type) {
+            // Out of the map first: deleting it deselects it, and the
+            // selection's listeners walk the map.
+            nodes_.erase(name);
             delete item;
             item = nullptr;
         }
@@ -101,8 +116,9 @@ void GraphScene::sync() {
         if (alive.contains(it->first)) {
             ++it;
         } else {
-            delete it->second;
-            it = nodes_.erase(it);
+            NodeItem* dead = it->second;
+            it = nodes_.erase(it);  // before the delete, as above
+            delete dead;
         }
     }
     // Edges are rebuilt only when they changed: a value edit (every step of

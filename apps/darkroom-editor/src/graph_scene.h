@@ -6,6 +6,7 @@
 // else it is removed. A connection dropped on a taken single input
 // replaces the one there.
 #include <QGraphicsScene>
+#include <QStringList>
 
 #include <darkroom/core/graph.h>
 
@@ -32,6 +33,11 @@ public:
     QPointF portPos(const QString& node, const QString& port, bool output) const;
     QString selectedNode() const;  // the first selected node, or empty
     void setErrors(const std::map<QString, QString>& errors);  // node -> message
+    // Nodes waiting for input (node -> which input); the others are not.
+    void setWaiting(const std::map<QString, QString>& waiting);
+    // The channels of the image flowing into each node, for its channel
+    // ports' drop-downs (nodes left out keep what they had).
+    void setInputChannels(const std::map<QString, QStringList>& channels);
     struct Timing {
         double seconds = -1;  // < 0: no badge
         bool ran = false;

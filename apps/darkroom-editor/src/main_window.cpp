@@ -5,6 +5,7 @@
 #include "cinema_panel.h"
 #include "document.h"
 #include "evaluation.h"
+#include "evaluator_adapter.h"
 #include "graph_scene.h"
 #include "graph_view.h"
 #include "layout.h"
@@ -14,7 +15,9 @@
 #include "render_view.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -81,6 +84,7 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     addDockWidget(Qt::RightDockWidgetArea, cd);
     cd->hide();  // until a database is opened
     quickAdd_ = new QuickAdd(registry, this);
+    buildExplorer(registry);
 
     probe_ = new QLabel;
     timing_ = new QLabel;
@@ -226,7 +230,10 @@ void MainWindow::scheduleEvaluation() {
         if (!sink.isEmpty()) node = sink;
     }
     const darkroom::Node* n = g.node(node.toStdString());
+    waiting_ = false;
+    render_->setMessage({}, false);
     if (!n) {
+        scene_->setWaiting({});
         render_->setImage(nullptr);
         scene_->setTimings({}, false);
         shownNode_.clear();
@@ -250,6 +257,10 @@ void MainWindow::scheduleEvaluation() {
             }
         }
     shownNode_ = node;
+    if (shownTarget_ != target || shownPort_ != port) explorerPipelineTimer_.start();
+    shownTarget_ = target;
+    shownPort_ = port;
+    if (showWaiting(node, target)) return;
     if (port.isEmpty()) {
         render_->setImage(nullptr);
         return;
@@ -262,7 +273,41 @@ void MainWindow::scheduleEvaluation() {
     eval_->request(g, target, port, doc_->folder());
 }
 
+QString MainWindow::absoluteInput(const QString& path) const {
+    if (path.isEmpty() || !QFileInfo(path).isRelative() || doc_->folder().isEmpty())
+        return QFileInfo(path).absoluteFilePath();
+    return QFileInfo(QDir(doc_->folder()).filePath(path)).absoluteFilePath();
+}
+
+bool MainWindow::showWaiting(const QString& node, const QString& target) {
+    std::map<QString, QString> waiting;  // node -> what it waits for
+    QStringList lines;
+    for (const auto& [n, input] : waitingForInput(doc_->graph(), target.toStdString())) {
+        const QString line = tr("%1 (%2) is waiting for input: connect its '%3' input")
+                                 .arg(QString::fromStdString(n), QString::fromStdString(doc_->graph().node(n)->type),
+                                      QString::fromStdString(input));
+        waiting[QString::fromStdString(n)] = line;
+        lines << line;
+    }
+    scene_->setWaiting(waiting);
+    if (waiting.empty()) return false;
+    // Not a failure: nothing to evaluate yet. Results still in flight are
+    // of an older graph and are not shown.
+    waiting_ = true;
+    lastRequest_.clear();
+    render_->setImage(nullptr);
+    render_->setMessage(lines.join('\n'), false);
+    timing_->setText(tr("%1: waiting for input").arg(node));
+    emit evaluated();
+    return true;
+}
+
 void MainWindow::onEvaluated(const EvalResult& r) {
+    if (waiting_) {
+        emit evaluated();
+        return;
+    }
+    if (r.level == 0) scene_->setInputChannels(r.inputChannels);
     std::map<QString, QString> errors;
     for (const auto& n : r.errorNodes) errors[n] = r.error;
     if (r.level == 0) scene_->setErrors(errors);
@@ -270,9 +315,18 @@ void MainWindow::onEvaluated(const EvalResult& r) {
         logMessage(r.error);
         statusBar()->showMessage(r.error, 8000);
         timing_->setText(tr("failed"));
+        // Over the picture, where the user looks, naming the failing node
+        // (the evaluator's messages usually start with it already).
+        QStringList named;
+        for (const auto& n : r.errorNodes)
+            if (const darkroom::Node* x = doc_->graph().node(n.toStdString());
+                x && !r.error.contains(QStringLiteral("node '%1'").arg(n)))
+                named << tr("'%1' (%2)").arg(n, QString::fromStdString(x->type));
+        render_->setMessage(named.isEmpty() ? r.error : tr("Node %1 failed: %2").arg(named.join(", "), r.error), true);
         emit evaluated();
         return;
     }
+    render_->setMessage({}, false);
     tags_[++tag_] = {r.generation, r.level};
     render_->setImage(r.image, r.level, tag_);
 
@@ -315,6 +369,19 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         return;
     }
     bool add = false;
+    // The reader may name the database relative to the pipeline, the
+    // browser as it was opened: the same folder either way.
+    const QString folder = QFileInfo(database).absoluteFilePath();
+    auto readsDatabase = [&](const darkroom::Node& n) {
+        const darkroom::Value* db = n.parameter("database");
+        return db && absoluteInput(QString::fromStdString(db->asString())) == folder;
+    };
+    if (const auto* n = g.node(reader.toStdString())) {
+        // Already reading that entry (a pipeline opened with its database):
+        // nothing to edit, the document stays as loaded.
+        const darkroom::Value* p = n->parameter("parameters");
+        if (readsDatabase(*n) && p && QString::fromStdString(p->asString()) == parameters) return;
+    }
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
         reader = doc_->uniqueName(QStringLiteral("CinemaReader"));
@@ -330,8 +397,7 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
                                                          QPointF(NodeItem::width() / 2, 40)
                                                    : QPointF(used.left(), used.bottom() + 60));
         }
-        const darkroom::Value* db = gg.node(n)->parameter("database");
-        if (!db || QString::fromStdString(db->asString()) != database) gg.setParameter(n, "database", database.toStdString());
+        if (!readsDatabase(*gg.node(n))) gg.setParameter(n, "database", folder.toStdString());
         gg.setParameter(n, "parameters", parameters.toStdString());
     }, add ? QString() : QStringLiteral("cinema:") + reader);
     if (!err.isEmpty()) logMessage(err);

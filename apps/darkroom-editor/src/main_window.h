@@ -9,7 +9,11 @@
 #include <darkroom/core/registry.h>
 
 #include <QMainWindow>
+#include <QTimer>
 
+#include "autosave.h"
+
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -23,6 +27,7 @@ namespace editor {
 
 class Autosave;
 class CinemaPanel;
+class ExplorerPanel;
 class Document;
 class Evaluation;
 class GraphScene;
@@ -46,6 +51,7 @@ public:
     RenderView* renderView() const { return render_; }
     Palette* palette() const { return palette_; }
     CinemaPanel* cinema() const { return cinema_; }
+    ExplorerPanel* explorer() const { return explorer_; }
     QuickAdd* quickAdd() const { return quickAdd_; }
     Evaluation* evaluation() const { return eval_; }
     QPlainTextEdit* log() const { return log_; }
@@ -57,14 +63,20 @@ public:
     // File operations; failures are logged and shown, never thrown.
     bool openPipeline(const QString& path);
     bool savePipeline(const QString& path);
-    bool openCinema(const QString& path);
+    // `select`: the entry to choose (CinemaReader's `parameters`), else the first.
+    bool openCinema(const QString& path, const QString& select = {});
     bool exportView(const QString& path);  // .exr: the buffer's channels; else the view as 8-bit
     // Adds a node of `type` and selects it: with its title at `scenePos`, or
     // right of the existing nodes.
     QString addNode(const QString& type, std::optional<QPointF> scenePos = std::nullopt);
     void logMessage(const QString& text);
+    // At the start: offers back the autosave of the session that crashed
+    // last (`ask` answers the question; default a message box) and sets the
+    // older ones aside (File > Recover autosave).
+    void offerRecovery(const std::function<bool(const Recovery&)>& ask = {});
+    void updateRecoverMenu();
     // Bumped when docks are added or renamed: an older saved layout is ignored.
-    static constexpr int kLayoutVersion = 2;
+    static constexpr int kLayoutVersion = 3;
     // Window geometry and dock layout to and from QSettings (closing saves,
     // the first show restores).
     void saveLayout() const;
@@ -86,11 +98,22 @@ private:
     void buildMenus();
     void scheduleEvaluation();
     void onEvaluated(const EvalResult& r);
+    bool showWaiting(const QString& node, const QString& target);
+    // A path as a node's input means it: relative to the pipeline's folder.
+    QString absoluteInput(const QString& path) const;
     void onEntryChosen(const QString& database, const QString& parameters);
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();
     bool maybeSave();
+    bool recover(const Recovery& r);
+    void buildHelpMenu();
+    void buildExplorer(const darkroom::Registry& registry);
+    QString explorerReader() const;  // the CinemaReader reading the explorer's database
+    void saveExplorerState();
+    void syncExplorerFromDocument();
+    void restoreExplorer();
+    void updateExplorerPipeline();
 
     Document* doc_;
     Autosave* autosave_;
@@ -100,15 +123,20 @@ private:
     QComboBox* channel_;
     Palette* palette_;
     CinemaPanel* cinema_;
+    ExplorerPanel* explorer_ = nullptr;
+    QTimer explorerPipelineTimer_;
     QuickAdd* quickAdd_;
     QPlainTextEdit* log_;
     Evaluation* eval_;
     QLabel* probe_;
     QLabel* timing_;
     QMenu* recentMenu_ = nullptr;
+    QMenu* recoverMenu_ = nullptr;
     QString shownNode_;
+    QString shownTarget_, shownPort_;  // the image output on screen (or asked for)
     QString lastRequest_;  // graph revision, node, port, folder of the last evaluation asked for
     bool restored_ = false;   // the layout came from QSettings
+    bool waiting_ = false;    // the shown part waits for input: results in flight are not shown
     bool shownOnce_ = false;
     std::uint64_t tag_ = 0;
     std::map<std::uint64_t, std::pair<std::uint64_t, int>> tags_;  // render tag -> generation, level

@@ -6,6 +6,7 @@
 
 #include "cinema_panel.h"
 #include "display.h"
+#include "explorer_panel.h"
 #include "document.h"
 #include "graph_scene.h"
 #include "graph_view.h"
@@ -51,6 +52,9 @@ void MainWindow::buildMenus() {
         if (!f.isEmpty()) openPipeline(f);
     });
     recentMenu_ = file->addMenu(tr("Open &Recent"));
+    recoverMenu_ = file->addMenu(tr("Recover &autosave"));
+    recoverMenu_->setObjectName("recoverMenu");
+    connect(recoverMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecoverMenu);
     file->addAction(tr("Open &Cinema database…"), this, [this] {
         const QString f = QFileDialog::getExistingDirectory(this, tr("Open Cinema database (.cdb folder)"), doc_->folder());
         if (!f.isEmpty()) openCinema(f);
@@ -91,9 +95,11 @@ void MainWindow::buildMenus() {
     view->addAction(tr("Fit &graph"), this, [this] { graphView_->fitAll(); });
     view->addAction(tr("Fit &image"), QKeySequence(Qt::Key_F), render_, &RenderView::fit);
     view->addSeparator();
-    for (const char* name : {"graph", "palette", "cinema", "log"})
+    for (const char* name : {"graph", "palette", "cinema", "explorer", "log"})
         if (QDockWidget* d = dock(name)) view->addAction(d->toggleViewAction());
     updateRecentMenu();
+    updateRecoverMenu();
+    buildHelpMenu();
 }
 
 bool MainWindow::openPipeline(const QString& path) {
@@ -107,6 +113,7 @@ bool MainWindow::openPipeline(const QString& path) {
     }
     addRecent(doc_->path());
     graphView_->fitAll();
+    restoreExplorer();
     statusBar()->showMessage(messages.isEmpty() ? tr("Opened %1").arg(path)
                                                 : tr("Opened %1 with %2 problems (see the log)").arg(path).arg(messages.size()),
                              8000);
@@ -125,17 +132,23 @@ bool MainWindow::savePipeline(const QString& path) {
     return true;
 }
 
-bool MainWindow::openCinema(const QString& path) {
+bool MainWindow::openCinema(const QString& path, const QString& select) {
     QString err;
-    if (!cinema_->open(path, &err)) {
+    // Absolute: the reader it drives resolves relative paths against the
+    // pipeline's folder, not the editor's working folder.
+    if (!cinema_->open(QFileInfo(path).absoluteFilePath(), &err, select)) {
         logMessage(err);
         statusBar()->showMessage(err, 10000);
         return false;
     }
-    if (QDockWidget* d = dock("cinema")) {
-        d->show();
-        d->raise();
-    }
+    explorer_->setDatabase(*cinema_->database(), cinema_->entries());
+    explorer_->setCurrent(cinema_->currentEntry());
+    updateExplorerPipeline();
+    for (const char* name : {"cinema", "explorer"})
+        if (QDockWidget* d = dock(name)) {
+            d->show();
+            d->raise();
+        }
     return true;
 }
 
@@ -196,6 +209,49 @@ void MainWindow::updateRecentMenu() {
     recentMenu_->setEnabled(!recentMenu_->isEmpty());
 }
 
+void MainWindow::offerRecovery(const std::function<bool(const Recovery&)>& ask) {
+    const std::vector<Recovery> left = Autosave::leftBehind();
+    if (left.empty()) return;
+    // The newest is the session that crashed last. Older ones were offered
+    // at earlier starts (or ended with it): set aside, not asked about again.
+    for (std::size_t i = 1; i < left.size(); ++i) Autosave::putAside(left[i]);
+    const Recovery& r = left.front();
+    const QString what = r.originalPath.isEmpty() ? tr("an unsaved pipeline") : r.originalPath;
+    bool yes;
+    if (ask) {
+        yes = ask(r);
+    } else {
+        QString text = tr("The last darkroom-editor ended without saving %1 (autosaved %2).\nRestore it?")
+                           .arg(what, r.savedAt);
+        if (left.size() > 1)
+            text += tr("\n\n%1 older autosaves were set aside: File > Recover autosave.").arg(left.size() - 1);
+        yes = QMessageBox::question(this, tr("Recover unsaved work"), text, QMessageBox::Yes | QMessageBox::No,
+                                    QMessageBox::Yes) == QMessageBox::Yes;
+    }
+    if (!yes) Autosave::drop(r);
+    else if (!recover(r)) Autosave::putAside(r);  // unreadable now: kept, never lost
+    updateRecoverMenu();
+}
+
+bool MainWindow::recover(const Recovery& r) {
+    QStringList messages;
+    const bool ok = Autosave::restore(r, doc_, messages);
+    if (ok) logMessage(tr("Restored %1 from %2").arg(r.originalPath.isEmpty() ? tr("an unsaved pipeline") : r.originalPath, r.file));
+    for (const QString& m : messages) logMessage(m);
+    return ok;
+}
+
+void MainWindow::updateRecoverMenu() {
+    if (!recoverMenu_) return;
+    recoverMenu_->clear();
+    for (const Recovery& r : Autosave::setAside())
+        recoverMenu_->addAction(tr("%1 (autosaved %2)").arg(r.originalPath.isEmpty() ? tr("unsaved pipeline") : r.originalPath, r.savedAt),
+                                this, [this, r] {
+                                    if (maybeSave() && recover(r)) statusBar()->showMessage(tr("Recovered %1").arg(r.file), 8000);
+                                });
+    recoverMenu_->setEnabled(!recoverMenu_->isEmpty());
+}
+
 void MainWindow::updateTitle() {
     const QString name = doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
     setWindowTitle(name + (doc_->undoStack()->isClean() ? QString() : QStringLiteral(" *")) +
@@ -253,7 +309,11 @@ bool MainWindow::restoreLayout() {
     const bool ok = restoreGeometry(s.value("layout/geometry").toByteArray()) &&
                     restoreState(s.value("layout/state").toByteArray(), kLayoutVersion);
     // The Cinema browser belongs to an open database, not to the last session.
-    if (QDockWidget* d = dock("cinema"); d && !cinema_->database()) d->hide();
+    for (const char* name : {"cinema", "explorer"})
+        if (QDockWidget* d = dock(name); d && !cinema_->database() && d->isVisible()) {
+            d->hide();
+            if (QString(name) == "explorer") dock("graph")->raise();  // its tab was the current one
+        }
     return ok;
 }
 

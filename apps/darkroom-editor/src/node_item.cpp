@@ -1,5 +1,6 @@
 #include "node_item.h"
 
+#include "channel_port.h"
 #include "param_widget.h"
 
 #include <QBrush>
@@ -121,6 +122,10 @@ const QString& NodeItem::badgeText() const { return badge_->text(); }
 bool NodeItem::badgeRan() const { return badge_->ran(); }
 
 void NodeItem::setTiming(double seconds, bool ran, bool preview) {
+    if (waiting()) {
+        badge_->set(QStringLiteral("waiting for input"), false);
+        return;
+    }
     QString text;
     if (seconds >= 0)
         text = (seconds < 0.9995 ? QStringLiteral("%1 ms").arg(seconds * 1000, 0, 'f', seconds < 0.01 ? 1 : 0)
@@ -134,6 +139,9 @@ void NodeItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->setRenderHint(QPainter::Antialiasing);
     QPen pen(error_.isEmpty() ? (isSelected() ? QColor(255, 200, 60) : QColor(20, 20, 20)) : QColor(230, 40, 40),
              error_.isEmpty() && !isSelected() ? 1.0 : 3.0);
+    if (error_.isEmpty() && waiting()) {
+        pen = QPen(isSelected() ? QColor(255, 200, 60) : QColor(170, 175, 185), 2.0, Qt::DashLine);
+    }
     p->setPen(pen);
     p->setBrush(QColor(58, 60, 66));
     p->drawRoundedRect(r, 6, 6);
@@ -179,10 +187,23 @@ void NodeItem::refresh(const darkroom::Graph& g) {
     }
 }
 
+void NodeItem::setChannelChoices(const QStringList& channels) {
+    for (auto& [n, w] : widgets_)
+        if (isChannelPort(w->port())) w->setChoices(channels);
+}
+
 void NodeItem::setError(const QString& message) {
     if (message == error_) return;
     error_ = message;
-    setToolTip(message);
+    setToolTip(error_.isEmpty() ? waiting_ : error_);
+    QGraphicsObject::update();
+}
+
+void NodeItem::setWaiting(const QString& why) {
+    if (why == waiting_) return;
+    waiting_ = why;
+    badge_->set(waiting() ? QStringLiteral("waiting for input") : QString(), false);
+    setToolTip(error_.isEmpty() ? waiting_ : error_);
     QGraphicsObject::update();
 }
 

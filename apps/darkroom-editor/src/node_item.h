@@ -47,10 +47,17 @@ public:
     // Shows the node's current values; hides widgets of connected inputs.
     void refresh(const darkroom::Graph& g);
     void setError(const QString& message);  // empty clears
+    // The channels of the image input, offered by its channel ports.
+    void setChannelChoices(const QStringList& channels);
     // The badge: seconds < 0 hides it.
     void setTiming(double seconds, bool ran, bool preview);
     const QString& badgeText() const;
     bool badgeRan() const;
+    bool failed() const { return !error_.isEmpty(); }
+    // Waiting for input: a required image input is not connected yet. Not
+    // a failure: drawn with a dashed border, the badge says so.
+    void setWaiting(const QString& why);  // empty clears
+    bool waiting() const { return !waiting_.isEmpty(); }
     static qreal width();
 
 signals:
@@ -61,6 +68,7 @@ private:
     QString name_;
     std::string type_;
     QString error_;
+    QString waiting_;
     // Its own item, so a new time repaints the badge, not the node's widgets.
     BadgeItem* badge_;
     qreal height_ = 0;

@@ -1,5 +1,7 @@
 #include "param_widget.h"
 
+#include "channel_port.h"
+
 #include <darkroom/colormap.h>
 #include <darkroom/srgb.h>
 
@@ -59,43 +61,9 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
     using T = darkroom::PortType;
     switch (port.type) {
     case T::Float:
-    case T::Int: {
-        spin_ = new QDoubleSpinBox;
-        const bool isInt = port.type == T::Int;
-        spin_->setDecimals(isInt ? 0 : 3);
-        spin_->setRange(port.minimum.value_or(-1e12), port.maximum.value_or(1e12));
-        spin_->setSingleStep(isInt ? 1 : 0.01);
-        spin_->setKeyboardTracking(false);
-        lay->addWidget(spin_, 1);
-        if (sliderRange(port)) {
-            slider_ = new QSlider(Qt::Horizontal);
-            slider_->setRange(0, isInt ? int(*port.maximum - *port.minimum) : kSliderSteps);
-            lay->addWidget(slider_, 2);
-            connect(slider_, &QSlider::sliderPressed, this, [this] { emit interaction(true); });
-            connect(slider_, &QSlider::sliderReleased, this, [this] { emit interaction(false); });
-            connect(slider_, &QSlider::valueChanged, this, [this, isInt](int s) {
-                if (updating_) return;
-                const double v = isInt ? *port_.minimum + s
-                                       : *port_.minimum + (*port_.maximum - *port_.minimum) * s / kSliderSteps;
-                spin_->setValue(v);  // emits through the spin box
-            });
-        }
-        if (!slider_)
-            if (auto* edit = spin_->findChild<QLineEdit*>()) {
-                edit->installEventFilter(this);
-                edit->setCursor(Qt::SizeHorCursor);
-            }
-        connect(spin_, &QDoubleSpinBox::valueChanged, this, [this, isInt](double v) {
-            if (slider_) {
-                QSignalBlocker b(slider_);
-                slider_->setValue(isInt ? int(v - *port_.minimum)
-                                        : int(std::lround((v - *port_.minimum) / (*port_.maximum - *port_.minimum) * kSliderSteps)));
-            }
-            if (updating_) return;
-            emit edited(isInt ? darkroom::Value(std::int64_t(std::llround(v))) : darkroom::Value(v));
-        });
+    case T::Int:
+        buildNumberBox(lay);
         break;
-    }
     case T::Bool:
         check_ = new QCheckBox;
         lay->addWidget(check_);
@@ -133,6 +101,10 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
         });
         break;
     default: {
+        if (isChannelPort(port)) {
+            buildChannelBox(lay);
+            break;
+        }
         line_ = new QLineEdit;
         lay->addWidget(line_, 1);
         connect(line_, &QLineEdit::editingFinished, this, [this] {
@@ -205,7 +177,74 @@ bool ParamWidget::eventFilter(QObject* watched, QEvent* e) {
     return QWidget::eventFilter(watched, e);
 }
 
+void ParamWidget::buildNumberBox(QHBoxLayout* lay) {
+    spin_ = new QDoubleSpinBox;
+    const bool isInt = port_.type == darkroom::PortType::Int;
+    spin_->setDecimals(isInt ? 0 : 3);
+    spin_->setRange(port_.minimum.value_or(-1e12), port_.maximum.value_or(1e12));
+    spin_->setSingleStep(isInt ? 1 : 0.01);
+    spin_->setKeyboardTracking(false);
+    lay->addWidget(spin_, 1);
+    if (sliderRange(port_)) {
+        slider_ = new QSlider(Qt::Horizontal);
+        slider_->setRange(0, isInt ? int(*port_.maximum - *port_.minimum) : kSliderSteps);
+        lay->addWidget(slider_, 2);
+        connect(slider_, &QSlider::sliderPressed, this, [this] { emit interaction(true); });
+        connect(slider_, &QSlider::sliderReleased, this, [this] { emit interaction(false); });
+        connect(slider_, &QSlider::valueChanged, this, [this, isInt](int s) {
+            if (updating_) return;
+            const double v = isInt ? *port_.minimum + s
+                                   : *port_.minimum + (*port_.maximum - *port_.minimum) * s / kSliderSteps;
+            spin_->setValue(v);  // emits through the spin box
+        });
+    }
+    if (!slider_)
+        if (auto* edit = spin_->findChild<QLineEdit*>()) {
+            edit->installEventFilter(this);
+            edit->setCursor(Qt::SizeHorCursor);
+        }
+    connect(spin_, &QDoubleSpinBox::valueChanged, this, [this, isInt](double v) {
+        if (slider_) {
+            QSignalBlocker b(slider_);
+            slider_->setValue(isInt ? int(v - *port_.minimum)
+                                    : int(std::lround((v - *port_.minimum) / (*port_.maximum - *port_.minimum) * kSliderSteps)));
+        }
+        if (updating_) return;
+        emit edited(isInt ? darkroom::Value(std::int64_t(std::llround(v))) : darkroom::Value(v));
+    });
+}
+
+void ParamWidget::buildChannelBox(QHBoxLayout* lay) {
+    // A channel of the input: its channels once an evaluation saw them,
+    // or any text (a channel an upstream edit is about to add).
+    combo_ = new QComboBox;
+    combo_->setEditable(true);
+    combo_->setInsertPolicy(QComboBox::NoInsert);
+    combo_->setMinimumContentsLength(6);
+    combo_->lineEdit()->setPlaceholderText(tr("automatic"));
+    lay->addWidget(combo_, 1);
+    connect(combo_, &QComboBox::textActivated, this, [this](const QString& t) { emitText(t); });
+    connect(combo_->lineEdit(), &QLineEdit::editingFinished, this, [this] { emitText(combo_->currentText()); });
+}
+
+void ParamWidget::setChoices(const QStringList& items) {
+    if (!combo_ || !combo_->isEditable()) return;
+    QStringList now;
+    for (int i = 0; i < combo_->count(); ++i) now << combo_->itemText(i);
+    if (now == items) return;
+    QSignalBlocker b(combo_);
+    const QString text = combo_->currentText();
+    combo_->clear();
+    combo_->addItems(items);
+    combo_->setCurrentIndex(int(items.indexOf(text)));
+    combo_->setEditText(text);
+}
+
 void ParamWidget::emitText(const QString& text) {
+    // An editable box reports a choice and then the end of editing: the
+    // same value is one edit, not two.
+    if (port_.type == darkroom::PortType::String && text == text_) return;
+    text_ = text;
     try {
         emit edited(darkroom::parseValue(port_.type, text.toStdString()));
     } catch (const std::exception& e) {
@@ -220,6 +259,7 @@ void ParamWidget::setValue(const darkroom::Value& v) {
         if (spin_) spin_->setValue(v.asFloat());
         if (check_) check_->setChecked(v.asBool());
         if (combo_) combo_->setCurrentText(QString::fromStdString(v.asString()));
+        if (port_.type == darkroom::PortType::String) text_ = QString::fromStdString(v.asString());
         if (line_ && !line_->hasFocus()) line_->setText(QString::fromStdString(darkroom::formatValue(port_.type, v)));
         if (colour_) {
             colourValue_ = v.asColor();

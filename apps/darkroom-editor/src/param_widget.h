@@ -13,6 +13,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QLineEdit;
 class QPixmap;
 class QPushButton;
@@ -26,6 +27,9 @@ public:
     // `baseFolder` is where the file chooser starts (the pipeline's folder).
     ParamWidget(const darkroom::PortSpec& port, const QString& baseFolder, QWidget* parent = nullptr);
     void setValue(const darkroom::Value& v);  // no edited() signal
+    // A channel port's drop-down: the input's channels (the text typed or
+    // set stays).
+    void setChoices(const QStringList& items);
     const darkroom::PortSpec& port() const { return port_; }
     // For tests: the slider of a ranged number, else null; the number field.
     QSlider* slider() const { return slider_; }
@@ -41,6 +45,8 @@ protected:
 
 private:
     void emitText(const QString& text);
+    void buildNumberBox(QHBoxLayout* lay);  // spin box, and a slider for a finite range
+    void buildChannelBox(QHBoxLayout* lay);
     double scrubStep(double start) const;
     bool pressed_ = false, scrubbing_ = false;
     QPointF pressAt_;
@@ -53,6 +59,7 @@ private:
     QComboBox* combo_ = nullptr;
     QLineEdit* line_ = nullptr;
     QPushButton* colour_ = nullptr;
+    QString text_;  // a string port's value as last set or emitted
     darkroom::Color colourValue_;
     bool updating_ = false;
 };

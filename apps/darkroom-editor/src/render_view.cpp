@@ -121,10 +121,33 @@ void RenderView::paintGL() {
         p.drawText(rect(), Qt::AlignCenter,
                    glError_.isEmpty() ? tr("Select a node with an image output") : tr("OpenGL: %1").arg(glError_));
     }
+    if (!message_.isEmpty()) drawMessage();
     if (tag_ != drawnTag_) {
         drawnTag_ = tag_;
         drawnNew_ = true;  // announced when the window's buffers swap
     }
+}
+
+void RenderView::setMessage(const QString& text, bool error) {
+    if (text == message_ && error == messageError_) return;
+    message_ = text;
+    messageError_ = error;
+    update();
+}
+
+void RenderView::drawMessage() {
+    // A banner along the top, over the picture (the last good frame stays
+    // visible below it): the user sees what failed where they are looking.
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRect box = rect().adjusted(8, 8, -8, -8);
+    const QRect textRect = p.fontMetrics().boundingRect(box.adjusted(10, 6, -10, -6), Qt::TextWordWrap, message_);
+    const QRect banner(box.left(), box.top(), box.width(), std::min(box.height(), textRect.height() + 14));
+    p.setPen(Qt::NoPen);
+    p.setBrush(messageError_ ? QColor(170, 28, 28, 235) : QColor(70, 72, 80, 230));
+    p.drawRoundedRect(banner, 5, 5);
+    p.setPen(Qt::white);
+    p.drawText(banner.adjusted(10, 7, -10, -7), Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, message_);
 }
 
 void RenderView::updateProbe(QPointF at) {

@@ -43,6 +43,11 @@ public:
     int mappings() const;
     // The OpenGL problem, when the view cannot draw.
     const QString& glError() const { return glError_; }
+    // A message written over the view (an evaluation error naming the
+    // node, "waiting for input"); empty clears. Errors are drawn in red.
+    void setMessage(const QString& text, bool error);
+    const QString& message() const { return message_; }
+    bool messageIsError() const { return messageError_; }
 
 signals:
     void modesChanged(const QStringList& modes, const QString& current);
@@ -63,6 +68,7 @@ protected:
 private:
     QSizeF fullSize() const;  // the image's size in full-resolution pixels
     void updateProbe(QPointF at);
+    void drawMessage();
 
     std::unique_ptr<ImageProgram> program_;
     darkroom::BufferPtr image_;
@@ -74,6 +80,8 @@ private:
     QString mode_;
     DisplaySpec spec_;
     QString glError_;
+    QString message_;
+    bool messageError_ = false;
     double zoom_ = 1.0;     // screen pixels per full-resolution image pixel
     QPointF offset_;        // widget position of the image's top-left corner
     bool fitted_ = false;   // first image, or after fit(): follow resizes
