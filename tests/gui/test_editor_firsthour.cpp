@@ -247,8 +247,12 @@ void FirstHourTest::onlyTheSessionThatCrashedIsOfferedBack() {
         QVERIFY(out.open(QIODevice::WriteOnly));
         out.write(("# darkroom-editor autosave of: /tmp/session" + std::to_string(i) + ".yaml\n").c_str());
         out.write(kFields);
+        // Qt sets a file's time only while it is open, and a later flush
+        // would stamp it "now" again: all three got the same time, and the
+        // order was left to chance.
+        QVERIFY(out.flush());
+        QVERIFY(out.setFileTime(QDateTime::currentDateTime().addSecs(-600 + 60 * i), QFileDevice::FileModificationTime));
         out.close();
-        out.setFileTime(QDateTime::currentDateTime().addSecs(-600 + 60 * i), QFileDevice::FileModificationTime);
         files << f;
     }
     QStringList asked;
