@@ -29,7 +29,7 @@ Registry& loadRegistry(const GlobalOptions& options) {
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
 
 bool showProgress(const GlobalOptions& options) {
-    return processes().root() && !options.quiet && (options.progress || stderrIsTerminal());
+    return processGroup().lead() && !options.quiet && (options.progress || stderrIsTerminal());
 }
 
 }  // namespace darkroom::cli

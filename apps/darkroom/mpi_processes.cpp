@@ -1,7 +1,9 @@
-// The runner under mpirun: MPI start-up and the rank/size every command reads.
+// The runner under mpirun: MPI start-up, and MPI_COMM_WORLD as the process
+// group every command works over.
 #include "processes.h"
 
 #include <darkroom/mpi/communicator.h>
+#include <darkroom/mpi/mpi_process_group.h>
 #include <darkroom/mpi/runtime.h>
 
 #include <memory>
@@ -11,14 +13,15 @@ namespace darkroom::cli {
 
 namespace {
 
-Processes& state() {
-    static Processes p;
-    return p;
-}
-
 std::unique_ptr<mpi::Runtime>& runtime() {
     static std::unique_ptr<mpi::Runtime> r;
     return r;
+}
+
+// Made when MPI starts, on every rank at once (its constructor is collective).
+std::unique_ptr<mpi::MpiProcessGroup>& world() {
+    static std::unique_ptr<mpi::MpiProcessGroup> w;
+    return w;
 }
 
 }  // namespace
@@ -26,25 +29,30 @@ std::unique_ptr<mpi::Runtime>& runtime() {
 ProcessScope::ProcessScope(int* argc, char*** argv) {
     runtime() = std::make_unique<mpi::Runtime>(argc, argv);
     if (!runtime()->active()) return;
-    const mpi::Communicator world(MPI_COMM_WORLD);
-    state().rank = world.rank();
-    state().size = world.size();
-    state().onThisNode = world.ranksOnThisNode();
+    world() = std::make_unique<mpi::MpiProcessGroup>(mpi::Communicator(MPI_COMM_WORLD));
 }
 
-ProcessScope::~ProcessScope() { runtime().reset(); }
+ProcessScope::~ProcessScope() {
+    world().reset();
+    runtime().reset();
+}
 
-const Processes& processes() { return state(); }
+ProcessGroup& processGroup() {
+    static SingleProcess alone;
+    if (!world() || world()->size() == 1) return alone;
+    return *world();
+}
 
 int defaultThreads() {
-    if (state().size == 1) return 0;
+    const ProcessGroup& g = processGroup();
+    if (g.size() == 1) return 0;
     const int cores = int(std::thread::hardware_concurrency());
-    return cores > state().onThisNode ? cores / state().onThisNode : 1;
+    return cores > g.onThisNode() ? cores / g.onThisNode() : 1;
 }
 
 int failAllProcesses(int code) {
-    if (state().size == 1) return code;
-    mpi::Communicator(MPI_COMM_WORLD).abort(code);
+    if (processGroup().size() == 1) return code;
+    world()->communicator().abort(code);
 }
 
 }  // namespace darkroom::cli

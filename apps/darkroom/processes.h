@@ -1,16 +1,12 @@
 #pragma once
 // The processes one invocation of the runner spans: this process alone, or
-// the ranks of an `mpirun -np N darkroom ...` (docs/scale-out.md). MPI is
-// started only when an MPI launcher started us, so a plain `darkroom` run
-// never touches MPI; a build without MPI always runs alone.
-namespace darkroom::cli {
+// the ranks of an `mpirun -np N darkroom ...` (docs/scale-out.md), as the
+// ProcessGroup the workflows work over. MPI is started only when an MPI
+// launcher started us, so a plain `darkroom` run never touches MPI; a build
+// without MPI always runs alone.
+#include <darkroom/core/process_group.h>
 
-struct Processes {
-    int rank = 0;
-    int size = 1;
-    int onThisNode = 1;  // ranks sharing this machine's cores
-    bool root() const { return rank == 0; }
-};
+namespace darkroom::cli {
 
 // Starts MPI when launched by mpirun (and built with MPI) and ends it on
 // destruction. Create it first thing in main.
@@ -22,7 +18,8 @@ public:
     ProcessScope& operator=(const ProcessScope&) = delete;
 };
 
-const Processes& processes();
+// This process alone, or MPI_COMM_WORLD under mpirun.
+ProcessGroup& processGroup();
 
 // Worker threads per process when -j is not given: 0 (all cores) alone, the
 // node's cores divided among its ranks under mpirun.

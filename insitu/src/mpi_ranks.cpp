@@ -2,42 +2,12 @@
 #include "ranks.h"
 
 #include <darkroom/error.h>
-#include <darkroom/mpi/distributed_capture.h>
+#include <darkroom/mpi/communicator.h>
+#include <darkroom/mpi/mpi_process_group.h>
 
 namespace darkroom::insitu {
 
 namespace {
-
-// Works on its own duplicate of the simulation's communicator, as libraries
-// do (IceT, ADIOS2), so its messages never meet the simulation's and its
-// error handler stays the simulation's business.
-class OverMpi final : public Ranks {
-public:
-    explicit OverMpi(MPI_Comm own) : own_(own), comm_(own), onThisNode_(comm_.ranksOnThisNode()) {}
-    ~OverMpi() override {
-        int finalised = 0;
-        MPI_Finalized(&finalised);
-        if (!finalised) MPI_Comm_free(&own_);
-    }
-    int rank() const override { return comm_.rank(); }
-    int size() const override { return comm_.size(); }
-    int onThisNode() const override { return onThisNode_; }
-    std::vector<std::string> allGather(const std::string& mine) override { return comm_.allGather(mine); }
-    void broadcast(std::string& text) override { comm_.broadcast(text); }
-    std::string agreedError(const std::string& mine) override { return mpi::agreedError(comm_, mine); }
-    std::vector<std::uint64_t> exclusiveSums(const std::vector<std::uint64_t>& counts) override {
-        return mpi::exclusiveSums(comm_, counts);
-    }
-    BufferPtr composite(const Buffer& local, const std::vector<std::uint64_t>& offsets, bool keepObjectId,
-                        bool keepPrimitiveId) override {
-        return mpi::compositeCapture(comm_, local, offsets, keepObjectId, keepPrimitiveId);
-    }
-
-private:
-    MPI_Comm own_;
-    mpi::Communicator comm_;
-    int onThisNode_;
-};
 
 // An MPI error on a handle that is no communicator is raised on
 // MPI_COMM_WORLD (MPI_COMM_SELF from MPI 4 on), whose handler is the
@@ -67,7 +37,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Ranks> mpiRanks(int fortranComm) {
+std::unique_ptr<ProcessGroup> mpiRanks(int fortranComm) {
     int initialised = 0;
     MPI_Initialized(&initialised);
     if (!initialised) throw Error("in situ: darkroom_insitu_set_mpi_comm needs MPI to be initialised (MPI_Init) first");
@@ -84,7 +54,10 @@ std::unique_ptr<Ranks> mpiRanks(int fortranComm) {
     mpi::check(code, what.c_str());
     // Errors come back as codes, turned into messages, instead of aborting.
     MPI_Comm_set_errhandler(own, MPI_ERRORS_RETURN);
-    return std::make_unique<OverMpi>(own);
+    // Its own duplicate, as libraries do (IceT, ADIOS2), so its messages
+    // never meet the simulation's and its error handler stays the
+    // simulation's business.
+    return std::make_unique<mpi::MpiProcessGroup>(own, mpi::MpiProcessGroup::Owned{});
 }
 
 }  // namespace darkroom::insitu

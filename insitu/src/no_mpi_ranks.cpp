@@ -5,7 +5,7 @@
 
 namespace darkroom::insitu {
 
-std::unique_ptr<Ranks> mpiRanks(int) {
+std::unique_ptr<ProcessGroup> mpiRanks(int) {
     throw Error("in situ: this Darkroom was built without MPI (-DDARKROOM_WITH_MPI=OFF); a session runs in one "
                 "process only");
 }

@@ -7,6 +7,7 @@
 #include <darkroom/data/cinema/writer.h>
 #include <darkroom/core/run_filter.h>
 #include <darkroom/scene/scene_file.h>
+#include <darkroom/workflows/capture.h>
 
 #include <cmath>
 #include <cstdint>
@@ -38,7 +39,7 @@ Session::Session(std::string database, int mode) : database_(std::move(database)
 
 Session::~Session() = default;
 
-void Session::setRanks(std::unique_ptr<Ranks> ranks) {
+void Session::setRanks(std::unique_ptr<ProcessGroup> ranks) {
     if (setup_.fixed()) throw BadInput("darkroom_insitu_set_mpi_comm: call it before the first capture");
     ranks_ = std::move(ranks);
 }
@@ -205,49 +206,13 @@ void Session::openWriter(const std::vector<std::string>& columns) {
     writer_ = std::make_unique<CinemaWriter>(database_, columns, o);
 }
 
-std::string Session::rowsToCapture(const CameraList& cams) {
-    // The database is opened on the first capture, on rank 0, which also
-    // decides which rows a resumed session still lacks.
-    std::string todo, error;
-    if (ranks_->rank() == 0) {
-        try {
-            if (!writer_) {
-                std::vector<std::string> columns{"time"};
-                for (const auto& [name, v] : cams.front().first) columns.push_back(name);
-                openWriter(columns);
-            }
-            for (std::size_t i = 0; i < cams.size(); ++i) {
-                CinemaParameters p{{"time", CinemaValue(step_->time)}};
-                for (const auto& [name, v] : cams[i].first) p.emplace(name, CinemaValue(v));
-                if (!writer_->hasEntry(p)) todo += std::to_string(i) + " ";
-            }
-        } catch (const Error& e) {
-            error = apiWording(e.what());
-        }
-    }
-    if (const std::string e = ranks_->agreedError(error); !e.empty()) throw Error(e);
-    ranks_->broadcast(todo);
-    setup_.fix();  // the database holds products of this setup now
-    return todo;
-}
-
 void Session::capture() {
     if (closed_) throw BadInput("darkroom_insitu_capture: the session is closed");
     if (!setup_.hasCameras())
         throw BadInput("darkroom_insitu_capture: no cameras (darkroom_insitu_camera_orbit or _add_camera)");
     if (!step_) throw BadInput("darkroom_insitu_capture: call darkroom_insitu_begin_step and hand over the objects first");
-    const bool several = ranks_->size() > 1;
-
-    // This rank's part: the acceleration structure over the simulation's arrays.
-    std::string error, names;
-    std::unique_ptr<embree::SceneBvh> bvh;
-    std::vector<std::uint64_t> counts;
     std::vector<embree::ObjectView> views;
-    for (const auto& o : step_->objects) {
-        views.push_back(o.view);
-        counts.push_back(o.view.primitiveCount);
-        names += o.view.name + '\n';
-    }
+    for (const auto& o : step_->objects) views.push_back(o.view);
     // Cameras against the data's size: the same bounds, so the same answer,
     // on every rank that made the same setup calls; agreed all the same, so
     // that ranks set up differently fail together rather than wait.
@@ -258,13 +223,66 @@ void Session::capture() {
         outOfReach = e.what();
     }
     if (const std::string e = ranks_->agreedError(outOfReach); !e.empty()) throw BadInput(e);
+    const std::unique_ptr<embree::SceneBvh> bvh = buildThisRanksPart(views);
+    if (!context_) {
+        FilterRunOptions ro;
+        const int cores = int(std::thread::hardware_concurrency());
+        const bool several = ranks_->size() > 1;
+        ro.threads = threads_ ? threads_ : several ? std::max(1, cores / std::max(1, ranks_->onThisNode())) : 0;
+        context_ = makeStandaloneContext(ro, "insitu");
+    }
+    workflows::CaptureSettings settings;
+    settings.request = setup_.request();
+    std::vector<std::uint64_t> counts;
+    for (const auto& v : views) counts.push_back(v.primitiveCount);
+    settings.primitiveOffsets = ranks_->exclusiveSums(counts);
+    const CameraList cams = setup_.cameras();
+    // The database is opened on the first capture, on rank 0, which also
+    // decides which rows a resumed session still lacks.
+    settings.openDatabase = [&]() -> CinemaWriter& {
+        try {
+            if (!writer_) {
+                std::vector<std::string> columns{"time"};
+                for (const auto& [name, v] : cams.front().first) columns.push_back(name);
+                openWriter(columns);
+            }
+        } catch (const Error& e) {
+            throw Error(apiWording(e.what()));
+        }
+        return *writer_;
+    };
+    settings.entriesAgreed = [this] { setup_.fix(); };  // the database holds products of this setup now
+    std::vector<workflows::CaptureEntry> entries;
+    for (const auto& [parameters, camera] : cams) {
+        workflows::CaptureEntry e;
+        e.camera = camera;
+        e.parameters.emplace("time", CinemaValue(step_->time));
+        for (const auto& [name, v] : parameters) e.parameters.emplace(name, CinemaValue(v));
+        entries.push_back(std::move(e));
+    }
+    const workflows::RenderFn render = [&](const Camera& camera, const CaptureRequest& request) {
+        return BufferPtr(embree::renderGBuffer(*bvh, camera, request, *context_));
+    };
+    try {
+        const workflows::CaptureSummary done = workflows::captureEntries(entries, render, *ranks_, settings);
+        if (ranks_->lead()) rows_ += std::int64_t(done.rendered);
+    } catch (const InputError& e) {
+        throw Error(e.what());  // a refused database is the session's error, as before the loop was shared
+    }
+}
+
+std::unique_ptr<embree::SceneBvh> Session::buildThisRanksPart(const std::vector<embree::ObjectView>& views) {
+    // This rank's part: the acceleration structure over the simulation's arrays.
+    std::string error, names;
+    for (const auto& v : views) names += v.name + '\n';
+    std::unique_ptr<embree::SceneBvh> bvh;
     try {
         if (!device_) device_ = std::make_shared<embree::Device>();
         bvh = std::make_unique<embree::SceneBvh>(device_, views, nullptr);
     } catch (const Error& e) {
         error = e.what();
     }
-    if (several) {
+    if (ranks_->size() > 1) {
         // Objects are matched by declaration order: the same names everywhere.
         const auto all = ranks_->allGather(names);
         for (std::size_t r = 1; r < all.size() && error.empty(); ++r)
@@ -275,41 +293,7 @@ void Session::capture() {
             if (c == '\n') c = ' ';
     }
     if (const std::string e = ranks_->agreedError(error); !e.empty()) throw Error(e);
-    const std::vector<std::uint64_t> offsets = ranks_->exclusiveSums(counts);
-
-    const CameraList cams = setup_.cameras();
-    const std::string todo = rowsToCapture(cams);
-
-    if (!context_) {
-        FilterRunOptions ro;
-        const int cores = int(std::thread::hardware_concurrency());
-        ro.threads = threads_ ? threads_ : several ? std::max(1, cores / std::max(1, ranks_->onThisNode())) : 0;
-        context_ = makeStandaloneContext(ro, "insitu");
-    }
-    CaptureRequest request = setup_.request();
-    if (several) request.objectId = request.primitiveId = true;  // they break ties across ranks
-    std::istringstream in(todo);
-    for (std::size_t i; in >> i;) {
-        BufferPtr image;
-        try {
-            image = embree::renderGBuffer(*bvh, cams[i].second, request, *context_);
-        } catch (const Error& e) {
-            error = e.what();
-        }
-        // A failure on any rank (this render, or rank 0's last write) stops all.
-        if (const std::string e = ranks_->agreedError(error); !e.empty()) throw Error(e);
-        if (several) image = ranks_->composite(*image, offsets, setup_.request().objectId, setup_.request().primitiveId);
-        if (!image) continue;
-        try {
-            CinemaParameters p{{"time", CinemaValue(step_->time)}};
-            for (const auto& [name, v] : cams[i].first) p.emplace(name, CinemaValue(v));
-            writer_->addEntry(p, *image);
-            ++rows_;
-        } catch (const Error& e) {
-            error = e.what();
-        }
-    }
-    if (const std::string e = ranks_->agreedError(error); !e.empty()) throw Error(e);
+    return bvh;
 }
 
 void Session::close() {

@@ -19,6 +19,7 @@ class CinemaWriter;
 class Context;
 namespace embree {
 class Device;
+class SceneBvh;
 struct ObjectView;
 }  // namespace embree
 }  // namespace darkroom
@@ -30,7 +31,7 @@ public:
     Session(std::string database, int mode);
     ~Session();
 
-    void setRanks(std::unique_ptr<Ranks> ranks);
+    void setRanks(std::unique_ptr<ProcessGroup> ranks);
     void setThreads(int threads);
     // Image, cameras and channels (checked there; fixed after the first capture).
     Setup& setup() { return setup_; }
@@ -62,13 +63,13 @@ private:
     const float* roundVertices(const char* call, StepObject& o, const float* vertices, std::size_t stride,
                                std::int64_t count, const float* radii, float radius);
     void openWriter(const std::vector<std::string>& columns);
-    // Opens the database on rank 0 (first capture) and returns the indices
-    // of `cams` whose rows it still lacks, on every rank (collective).
-    std::string rowsToCapture(const CameraList& cams);
+    // This rank's objects ray traceable; every rank declared the same
+    // objects (collective).
+    std::unique_ptr<embree::SceneBvh> buildThisRanksPart(const std::vector<embree::ObjectView>& views);
 
     std::string database_;
     int mode_;
-    std::unique_ptr<Ranks> ranks_;
+    std::unique_ptr<ProcessGroup> ranks_;
     int threads_ = 0;
     Setup setup_;
     std::unique_ptr<Step> step_;

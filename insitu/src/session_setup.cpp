@@ -1,8 +1,8 @@
 #include "session_setup.h"
 
 #include "arguments.h"
-#include "../../framework/core/src/hashing.h"
 
+#include <darkroom/core/hash_mix.h>
 #include <darkroom/scene/camera_bounds.h>
 #include <darkroom/scene/scene_file.h>
 

@@ -32,7 +32,7 @@ Bounds boundsOf(const std::vector<embree::ObjectView>& objects) {
     return b;
 }
 
-Bounds agreeBounds(Ranks& ranks, const Bounds& mine) {
+Bounds agreeBounds(ProcessGroup& ranks, const Bounds& mine) {
     if (ranks.size() == 1) return mine;
     // Hexadecimal floating point: exact, whatever the locale.
     char text[256];

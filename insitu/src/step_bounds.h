@@ -18,6 +18,6 @@ namespace darkroom::insitu {
 Bounds boundsOf(const std::vector<embree::ObjectView>& objects);
 
 // The union of every rank's bounds, the same on every rank (collective).
-Bounds agreeBounds(Ranks& ranks, const Bounds& mine);
+Bounds agreeBounds(ProcessGroup& ranks, const Bounds& mine);
 
 }  // namespace darkroom::insitu

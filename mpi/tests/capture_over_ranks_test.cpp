@@ -78,14 +78,15 @@ struct Scene {
     }
 };
 
-void expectSameCapture(int ranks, const std::string& yaml) {
+// `files`: what the database holds, data.csv and the marker included.
+void expectSameCapture(int ranks, const std::string& yaml, long files = 6) {
     Scene s(yaml);
     const RunResult one = runAlone({"capture", s.path, "-o", s.dir.file("one.cdb"), "-q"});
     ASSERT_EQ(one.exitCode, 0) << one.err;
     const RunResult many = runOnRanks(ranks, {"capture", s.path, "-o", s.dir.file("many.cdb"), "-q"});
     ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
     EXPECT_EQ(compareFolders(s.dir.file("one.cdb"), s.dir.file("many.cdb")), "");
-    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(s.dir.file("one.cdb")), {}), 6);  // data.csv, the marker + 4
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(s.dir.file("one.cdb")), {}), files);
 }
 
 TEST(CaptureOverRanks, FourRanksWriteTheSingleProcessDatabaseByteForByte) { expectSameCapture(4, kScene); }
@@ -96,6 +97,21 @@ TEST(CaptureOverRanks, WithoutIdChannelsTheHiddenIdsStillDecideTies) {
     std::string yaml = kScene;
     yaml.replace(yaml.find("  objectId: true\n  primitiveId: true\n"), 36, "  objectId: false\n  primitiveId: false\n");
     expectSameCapture(4, yaml);
+}
+
+// D4 (issue 27, found by issue 26's probe): objects stored as point lists
+// are written beside each entry over ranks too — whole, though one is read
+// from a parallel file whose pieces the ranks would share out if it were
+// ray traced. Before the capture loop was shared, mpirun dropped them
+// silently (no FILE_ column, no files, exit 0).
+TEST(CaptureOverRanks, PointListsAreWrittenAsOneProcessWritesThem) {
+    std::string yaml = kScene;
+    yaml.replace(yaml.find("objects:\n") + 9, 0,
+                 "  - file: field.pvtp\n    name: maxima\n    store: pointList\n"
+                 "  - file: field_all.vtp\n    name: all points\n    store: pointList\n");
+    // Per entry: the product and 6 point lists, one per piece of the
+    // parallel file (5) and the whole file's.
+    expectSameCapture(3, yaml, 2 + 4 * (1 + 6));
 }
 
 TEST(CaptureOverRanks, AResumedCaptureRendersOnlyWhatIsMissing) {

@@ -1,5 +1,6 @@
 #include <darkroom/buffer.h>
 #include <darkroom/error.h>
+#include <darkroom/channel_text.h>
 
 #include <cstdint>
 #include <cstdlib>
@@ -86,18 +87,9 @@ std::vector<std::string> Buffer::channelNames() const {
     return out;
 }
 
-static std::string channelsText(const Buffer& b) {
-    std::string have;
-    for (const auto& c : b.channels()) {
-        if (!have.empty()) have += ", ";
-        have += c.name + " (" + toString(c.type) + ")";
-    }
-    return have.empty() ? std::string("no channels") : have;
-}
-
 static std::string describeMissing(const Buffer& b, std::string_view channel, const char* type) {
     return "expected a " + std::string(type) + " channel '" + std::string(channel) + "' but the image has " +
-           channelsText(b);
+           channelListText(b, true);
 }
 
 const float* Buffer::requireFloat(std::string_view channel) const {

@@ -10,13 +10,14 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 namespace darkroom {
 
 namespace {
 
 using Vec = std::array<double, 3>;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 // --- colour space conversions (linear RGB <-> XYZ <-> CIELAB <-> Msh) ---
 // sRGB primaries, D65 white, the same constants as VTK/ParaView.

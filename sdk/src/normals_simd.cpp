@@ -81,6 +81,20 @@ V3 tangent(const Job& job, const Axis& s, V zc, V ac, const V3& pc, const V3& fa
     return select(central, sub(s.pr1, s.pl1), t);
 }
 
+// The unit normal tx x ty turned towards the viewer; where the tangents
+// give none (zero or NaN length), the direction to the viewer.
+HWY_INLINE V3 orientedNormal(D d, const V3& tx, const V3& ty, const V3& toViewer) {
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0);
+    V3 n{hn::Sub(hn::Mul(tx.y, ty.z), hn::Mul(tx.z, ty.y)), hn::Sub(hn::Mul(tx.z, ty.x), hn::Mul(tx.x, ty.z)),
+         hn::Sub(hn::Mul(tx.x, ty.y), hn::Mul(tx.y, ty.x))};
+    const V len = hn::Sqrt(dot(n, n));
+    const M usable = hn::And(hn::Gt(len, zero), surface(len));
+    const V lv = hn::Sqrt(dot(toViewer, toViewer));
+    const V3 viewerUnit = select(hn::Gt(lv, zero), scale(toViewer, hn::Div(one, lv)), toViewer);
+    n = select(usable, scale(n, hn::Div(one, len)), viewerUnit);
+    return select(hn::Lt(dot(n, toViewer), zero), V3{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)}, n);
+}
+
 int Span(const Job& job, int y, int x0, int x1, const double* const affine[5]) {
     const D d;
     const DF df;
@@ -162,14 +176,7 @@ int Span(const Job& job, int y, int x0, int x1, const double* const affine[5]) {
         const V3 ty = tangent(job, ay, zc, ac, pc, V3{zero, hn::Neg(one), zero});  // image y runs down
 
         const V3 toViewer = persp ? V3{hn::Neg(pc.x), hn::Neg(pc.y), hn::Neg(pc.z)} : V3{zero, zero, hn::Neg(one)};
-        V3 n{hn::Sub(hn::Mul(tx.y, ty.z), hn::Mul(tx.z, ty.y)), hn::Sub(hn::Mul(tx.z, ty.x), hn::Mul(tx.x, ty.z)),
-             hn::Sub(hn::Mul(tx.x, ty.y), hn::Mul(tx.y, ty.x))};
-        const V len = hn::Sqrt(dot(n, n));
-        const M usable = hn::And(hn::Gt(len, zero), surface(len));
-        const V lv = hn::Sqrt(dot(toViewer, toViewer));
-        const V3 viewerUnit = select(hn::Gt(lv, zero), scale(toViewer, hn::Div(one, lv)), toViewer);
-        n = select(usable, scale(n, hn::Div(one, len)), viewerUnit);
-        n = select(hn::Lt(dot(n, toViewer), zero), V3{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)}, n);
+        const V3 n = orientedNormal(d, tx, ty, toViewer);
 
         store(out.view, i, valid, V3{n.x, n.y, hn::Mul(zSign, n.z)});
         const Vec3 basis[3] = {g.right, g.up, g.forward};

@@ -1,5 +1,6 @@
 #include <darkroom/error.h>
 #include <darkroom/value.h>
+#include <darkroom/strings.h>
 
 #include <charconv>
 #include <cmath>
@@ -29,13 +30,6 @@ const char* heldName(const Value::Storage& s) {
     throw Error(std::string("expected ") + wanted + " but the value is " + heldName(s));
 }
 
-std::string trim(std::string_view s) {
-    std::size_t b = 0, e = s.size();
-    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-    return std::string(s.substr(b, e - b));
-}
-
 std::string formatDouble(double d) {
     if (std::isnan(d)) return "nan";
     if (std::isinf(d)) return d > 0 ? "inf" : "-inf";
@@ -58,7 +52,7 @@ std::string formatFloat(float f) {
 }
 
 bool parseDouble(std::string_view t, double& out) {
-    const std::string s = trim(t);
+    const std::string s = std::string(trimSpace(t));
     if (s == "nan" || s == "NaN" || s == "NAN" || s == ".nan" || s == ".NaN") {
         out = std::numeric_limits<double>::quiet_NaN();
         return true;
@@ -79,7 +73,7 @@ bool parseDouble(std::string_view t, double& out) {
 
 // "[a, b, c]" or "a, b, c" or "a b c" -> numbers.
 bool parseList(std::string_view text, std::vector<double>& out) {
-    std::string s = trim(text);
+    std::string s = std::string(trimSpace(text));
     if (!s.empty() && s.front() == '[') {
         if (s.back() != ']') return false;
         s = s.substr(1, s.size() - 2);
@@ -89,7 +83,7 @@ bool parseList(std::string_view text, std::vector<double>& out) {
     while (i <= s.size()) {
         std::size_t j = s.find_first_of(", ", i);
         if (j == std::string::npos) j = s.size();
-        const std::string tok = trim(std::string_view(s).substr(i, j - i));
+        const std::string tok = std::string(trimSpace(std::string_view(s).substr(i, j - i)));
         if (!tok.empty()) {
             double d;
             if (!parseDouble(tok, d)) return false;
@@ -185,7 +179,7 @@ std::string formatValue(PortType type, const Value& v) {
 }
 
 Value parseValue(PortType type, std::string_view text) {
-    const std::string t = trim(text);
+    const std::string t = std::string(trimSpace(text));
     switch (type) {
         case PortType::Image: throw Error("an image cannot be given as text; connect an image output");
         case PortType::Float: {

@@ -1,43 +1,47 @@
 #!/usr/bin/env bash
-# The plugin boundary is checked, not trusted: compares the ABI the SDK
-# library exports (as libabigail's abidw sees it, restricted to the types of
-# the public headers) with the baseline committed for the current
-# DARKROOM_ABI_VERSION (sdk/abi/darkroom-sdk-abi<N>.xml).
+# The plugin boundary is checked, not trusted: compares the ABI a library
+# exports (as libabigail's abidw sees it, restricted to the types of its
+# public headers) with the baseline committed for its current ABI version.
 #
-#   check_abi.sh LIBRARY SOURCE_DIR
+#   check_abi.sh LIBRARY SOURCE_DIR [sdk|data]
 #
-# Fails when the ABI changed without a bump of DARKROOM_ABI_VERSION (an
-# incompatible change), when a compatible change was not recorded, or when no
-# baseline exists for the current version. scripts/update-abi.sh records one.
+#   sdk  (default) libdarkroom-sdk: sdk/include/darkroom, DARKROOM_ABI_VERSION,
+#        sdk/abi/darkroom-sdk-abi<N>.xml
+#   data libdarkroom-data, which out-of-tree plugins may link to read Cinema
+#        databases: framework/data/include/darkroom/data,
+#        DARKROOM_DATA_ABI_VERSION, framework/data/abi/darkroom-data-abi<N>.xml
+#
+# Fails when the ABI changed without a bump of the version (an incompatible
+# change), when a compatible change was not recorded, or when no baseline
+# exists for the current version. scripts/update-abi.sh records one.
 set -euo pipefail
 lib=$1
 src=$2
-version=$(sed -n 's/^#define DARKROOM_ABI_VERSION \([0-9]*\)u\{0,1\}.*/\1/p' "$src/sdk/include/darkroom/version.h")
-baseline="$src/sdk/abi/darkroom-sdk-abi$version.xml"
+component=${3:-sdk}
+source "$src/scripts/abi_component.sh" "$src" "$component"
 if [ ! -f "$baseline" ]; then
-  echo "check_abi: no ABI baseline for DARKROOM_ABI_VERSION $version ($baseline)." >&2
-  echo "check_abi: after bumping the version, record the new ABI with scripts/update-abi.sh" >&2
+  echo "check_abi: no ABI baseline for $macro $version ($baseline)." >&2
+  echo "check_abi: after bumping the version, record the new ABI with scripts/update-abi.sh $component" >&2
   exit 1
 fi
 current=$(mktemp --suffix=.xml)
 trap 'rm -f "$current"' EXIT
-# The same options as scripts/update-abi.sh.
-abidw --headers-dir "$src/sdk/include/darkroom" --no-corpus-path --no-show-locs --drop-private-types --no-comp-dir-path --exported-interfaces-only --type-id-style hash --no-elf-needed --out-file "$current" "$lib"
+abi_dump "$lib" "$current"
 set +e
 report=$(abidiff "$baseline" "$current" 2>&1)
 status=$?
 set -e
 if [ $status -eq 0 ]; then
-  echo "check_abi: the SDK's ABI matches the baseline of ABI version $version"
+  echo "check_abi: the $component library's ABI matches the baseline of ABI version $version"
   exit 0
 fi
 echo "$report"
 if [ $((status & 8)) -ne 0 ]; then
-  echo "check_abi: the SDK's ABI changed incompatibly but DARKROOM_ABI_VERSION is still $version:" \
-       "bump it in sdk/include/darkroom/version.h (compiled plugins must be refused) and run scripts/update-abi.sh" >&2
+  echo "check_abi: the $component library's ABI changed incompatibly but $macro is still $version:" \
+       "bump it in $version_header (compiled plugins must be refused) and run scripts/update-abi.sh $component" >&2
 elif [ $((status & 4)) -ne 0 ]; then
-  echo "check_abi: the SDK's ABI changed compatibly (additions); record it with scripts/update-abi.sh" \
-       "(no bump needed)" >&2
+  echo "check_abi: the $component library's ABI changed compatibly (additions); record it with" \
+       "scripts/update-abi.sh $component (no bump needed)" >&2
 else
   echo "check_abi: abidiff failed (exit status $status)" >&2
 fi

@@ -37,6 +37,29 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     scene_ = new GraphScene(doc_, this);
     graphView_ = new GraphView(scene_);
 
+    QToolButton* fit = buildRenderPane();
+    buildDocks(registry);
+    probe_ = new QLabel;
+    timing_ = new QLabel;
+    statusBar()->addWidget(probe_, 1);
+    statusBar()->addPermanentWidget(timing_);
+    for (const auto& d : pluginProblems) logMessage(QString::fromStdString(d.str()));
+    logMessage(tr("%1 filter types from %2 plugins").arg(registry.filters().size()).arg(registry.plugins().size()));
+    connectParts(fit);
+
+    buildMenus();
+    updateTitle();
+    // Defaults: a render view well over half the window, a graph strip
+    // tall enough for a row of nodes at a readable zoom.
+    resize(1560, 960);
+    // The saved size now; the dock layout once the window has that size
+    // (restoring it earlier lays the docks out for the default size).
+    QSettings s;
+    if (s.value("layout/version").toInt() == kLayoutVersion) restoreGeometry(s.value("layout/geometry").toByteArray());
+}
+
+// The render view with its channel chooser and Fit button (returned).
+QToolButton* MainWindow::buildRenderPane() {
     auto* renderPane = new QWidget;
     auto* rl = new QVBoxLayout(renderPane);
     rl->setContentsMargins(0, 0, 0, 0);
@@ -56,6 +79,11 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     rl->addWidget(render_, 1);
     setCentralWidget(renderPane);
 
+    return fit;
+}
+
+// The graph, log, palette and Cinema docks, the quick-add box and the explorer.
+void MainWindow::buildDocks(const darkroom::Registry& registry) {
     // The bottom docks span the whole width: the graph is wide and short.
     setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
     setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
@@ -86,14 +114,10 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     quickAdd_ = new QuickAdd(registry, this);
     buildExplorer(registry);
 
-    probe_ = new QLabel;
-    timing_ = new QLabel;
-    statusBar()->addWidget(probe_, 1);
-    statusBar()->addPermanentWidget(timing_);
+}
 
-    for (const auto& d : pluginProblems) logMessage(QString::fromStdString(d.str()));
-    logMessage(tr("%1 filter types from %2 plugins").arg(registry.filters().size()).arg(registry.plugins().size()));
-
+// What the parts tell each other.
+void MainWindow::connectParts(QToolButton* fit) {
     connect(palette_, &Palette::addRequested, this, [this](const QString& t) { addNode(t); });
     connect(graphView_, &GraphView::quickAddRequested, this, [this](QPoint at) {
         const QPointF scenePos = graphView_->mapToScene(at);
@@ -135,15 +159,6 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     connect(fit, &QToolButton::clicked, render_, &RenderView::fit);
     connect(cinema_, &CinemaPanel::entryChosen, this, &MainWindow::onEntryChosen);
 
-    buildMenus();
-    updateTitle();
-    // Defaults: a render view well over half the window, a graph strip
-    // tall enough for a row of nodes at a readable zoom.
-    resize(1560, 960);
-    // The saved size now; the dock layout once the window has that size
-    // (restoring it earlier lays the docks out for the default size).
-    QSettings s;
-    if (s.value("layout/version").toInt() == kLayoutVersion) restoreGeometry(s.value("layout/geometry").toByteArray());
 }
 
 void MainWindow::showEvent(QShowEvent* e) {

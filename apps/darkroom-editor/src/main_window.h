@@ -23,6 +23,8 @@ class QLabel;
 class QMenu;
 class QPlainTextEdit;
 
+class QToolButton;
+
 namespace editor {
 
 class Autosave;
@@ -96,6 +98,9 @@ protected:
 
 private:
     void buildMenus();
+    QToolButton* buildRenderPane();
+    void buildDocks(const darkroom::Registry& registry);
+    void connectParts(QToolButton* fit);
     void scheduleEvaluation();
     void onEvaluated(const EvalResult& r);
     bool showWaiting(const QString& node, const QString& target);

@@ -1,8 +1,8 @@
 #include "commands.h"
-#include "json_writer.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 namespace darkroom::cli {
 
@@ -14,31 +14,22 @@ void addPluginsCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         run = [&global, json] {
             const Registry& r = loadRegistry(global);
             if (*json) {
-                JsonWriter w;
-                w.beginObject();
-                w.key("plugins").beginArray();
-                for (const auto& p : r.plugins()) {
-                    w.beginObject();
-                    w.key("name").value(p.origin.plugin).key("version").value(p.origin.version);
-                    w.key("sdkVersion").value(p.sdkVersion).key("path").value(p.origin.path);
-                    w.key("types").beginArray();
-                    for (const auto& t : p.types) w.value(t);
-                    w.endArray().endObject();
-                }
-                w.endArray();
-                w.key("filters").beginArray();
-                for (const auto* f : r.filters()) {
-                    w.beginObject().key("type").value(f->info.type).key("category").value(f->info.category);
-                    w.key("plugin").value(f->origin.plugin).key("doc").value(f->info.doc).endObject();
-                }
-                w.endArray();
-                w.key("backends").beginArray();
-                for (const auto* b : r.backends()) {
-                    w.beginObject().key("type").value(b->info.type).key("plugin").value(b->origin.plugin);
-                    w.key("doc").value(b->info.doc).endObject();
-                }
-                w.endArray().endObject();
-                fmt::print("{}\n", w.str());
+                // Keys in the order written (ordered_json), as scripts reading it expect.
+                nlohmann::ordered_json out;
+                out["plugins"] = nlohmann::ordered_json::array();
+                for (const auto& p : r.plugins())
+                    out["plugins"].push_back({{"name", p.origin.plugin}, {"version", p.origin.version},
+                                              {"sdkVersion", p.sdkVersion}, {"path", p.origin.path},
+                                              {"types", p.types}});
+                out["filters"] = nlohmann::ordered_json::array();
+                for (const auto* f : r.filters())
+                    out["filters"].push_back({{"type", f->info.type}, {"category", f->info.category},
+                                              {"plugin", f->origin.plugin}, {"doc", f->info.doc}});
+                out["backends"] = nlohmann::ordered_json::array();
+                for (const auto* b : r.backends())
+                    out["backends"].push_back(
+                        {{"type", b->info.type}, {"plugin", b->origin.plugin}, {"doc", b->info.doc}});
+                fmt::print("{}\n", out.dump());
                 return kOk;
             }
             fmt::print("Plugins:\n");

@@ -1,17 +1,20 @@
 #include "commands.h"
-#include "foreach_run.h"
 #include "processes.h"
 #include "profile_report.h"
 #include "progress_bar.h"
 
 #include <darkroom/error.h>
+#include <darkroom/core/assignment.h>
 #include <darkroom/core/evaluator.h>
 #include <darkroom/core/pipeline.h>
+#include <darkroom/workflows/batch.h>
+#include <darkroom/workflows/pipeline_record.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -19,52 +22,141 @@ namespace darkroom::cli {
 
 namespace {
 
-// --set node.port=value, typed by the port.
-bool applySet(Graph& g, const std::string& assignment) {
-    const auto eq = assignment.find('=');
-    const auto dot = assignment.find('.');
-    if (eq == std::string::npos || dot == std::string::npos || dot > eq) {
-        reportError("--set '" + assignment + "': expected node.port=value");
-        return false;
+struct RunArgs {
+    std::string path;
+    std::vector<std::string> sets;
+    std::string output;
+    int threads = 0;
+    std::string foreach;
+    std::string where;
+    std::string index;
+    bool resume = false;
+    bool profile = false;
+    double cacheMB = 2048;
+};
+
+// Reports the batch's failures the way the runner reports them: a graph's
+// diagnostics, or one line; returns the exit code.
+int reportBatch(const workflows::BatchSummary& summary, bool quiet) {
+    ProcessGroup& group = processGroup();
+    if (group.lead() && summary.shadedPerProcess.size() > 1 && !quiet) {
+        // How the dynamic scheduling shared the entries out.
+        std::string counts;
+        std::size_t shaded = 0;
+        for (const std::size_t n : summary.shadedPerProcess) {
+            counts += (counts.empty() ? "" : ", ") + std::to_string(n);
+            shaded += n;
+        }
+        std::fprintf(stderr, "darkroom: shaded %zu entries over %zu ranks (per rank: %s)%s\n", shaded,
+                     summary.shadedPerProcess.size(), counts.c_str(),
+                     summary.kept ? (", " + std::to_string(summary.kept) + " kept by --resume").c_str() : "");
     }
-    const std::string node = assignment.substr(0, dot);
-    const std::string port = assignment.substr(dot + 1, eq - dot - 1);
-    const std::string text = assignment.substr(eq + 1);
+    if (!summary.failure) return summary.failedElsewhere ? int(kRuntimeFailure) : int(kOk);
     try {
-        const Node* n = g.node(node);
-        if (!n) throw Error("no node named '" + node + "' in the pipeline");
-        const PortSpec* spec = g.ports(*n).input(port);
-        if (!spec) throw Error("node '" + node + "' (" + n->type + ") has no input '" + port + "'");
-        // A value on a connected port would be silently ignored: the edge wins.
-        if (const auto edges = g.edgesInto(node, port); !edges.empty())
-            throw Error("input '" + port + "' of node '" + node + "' is fed by " + edges.front().from.node + "." +
-                        edges.front().from.port + ", so a value set here would be ignored; remove that edge from "
-                        "the pipeline to set it");
-        g.setParameter(node, port, parseValue(spec->type, text));
+        std::rethrow_exception(summary.failure);
+    } catch (const GraphError& e) {
+        report(e.diagnostics());
+        return kBadInput;
     } catch (const Error& e) {
-        reportError("--set '" + assignment + "': " + e.what());
-        return false;
+        reportError(e.what());
     }
-    return true;
+    return kRuntimeFailure;
+}
+
+// The pipeline once, or once per entry of --foreach's database.
+int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, EvaluatorOptions o) {
+    // Under mpirun, rank 0 alone draws the bar.
+    ProgressBar bar("run", showProgress(global));
+    o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
+    o.onWarning = [&bar](const Diagnostic& w) {
+        bar.finish();
+        report({w});
+    };
+    Evaluator ev(o);
+    auto evaluate = [&](const std::string& title, std::vector<std::string> sinks = {}) {
+        const auto t0 = std::chrono::steady_clock::now();
+        ev.run(g, std::move(sinks));
+        if (a.profile) {
+            bar.finish();
+            printProfile(title, ev.lastProfile(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        }
+    };
+    ProcessGroup& group = processGroup();
+    if (a.foreach.empty()) {
+        // One evaluation is not shared out: rank 0 runs it.
+        if (group.size() > 1) {
+            if (!group.lead()) return kOk;
+            if (!global.quiet)
+                fmt::print(stderr, "darkroom: note: without --foreach there is one evaluation; rank 0 runs it and "
+                                   "the other {} ranks have nothing to do\n", group.size() - 1);
+        }
+        evaluate(a.path);
+        bar.finish();
+        return kOk;
+    }
+    workflows::BatchCallbacks cb;
+    cb.evaluate = [&](const std::string& title, const std::vector<std::string>& sinks) { evaluate(title, sinks); };
+    cb.progress = [&bar](double f, const std::string& entry) { bar.update(f, entry); };
+    workflows::BatchSummary summary;
+    try {
+        summary = workflows::shadeEntries(g, ev, o, {a.foreach, a.where, a.index, a.resume}, group, cb);
+    } catch (const InputError& e) {
+        bar.finish();
+        // The same on every process: one says so.
+        if (group.lead()) reportError(e.what());
+        return kBadInput;
+    }
+    bar.finish();
+    return reportBatch(summary, global.quiet);
+}
+
+int runPipeline(const GlobalOptions& global, const RunArgs& a) {
+    const Registry& r = loadRegistry(global);
+    Diagnostics d;
+    Graph g = loadPipeline(a.path, r, d);
+    // Every rank meets the same problems in the same files: one says so.
+    const bool lead = processGroup().lead();
+    if (lead) report(d);
+    if (hasErrors(d)) return kBadInput;
+    for (const auto& s : a.sets) {
+        try {
+            assignParameter(g, s);
+        } catch (const Error& e) {
+            if (lead) reportError("--set '" + s + "': " + e.what());
+            return kBadInput;
+        }
+    }
+    Diagnostics problems = g.validate();
+    if (hasErrors(problems)) {
+        for (auto& x : problems) x.where = a.path + ": " + x.where;
+        if (lead) report(problems);
+        return kBadInput;
+    }
+    // What each CinemaWriter records of the pipeline, for a resume to compare.
+    workflows::describeUpstreamPipelines(g);
+    if (!a.output.empty()) std::filesystem::create_directories(a.output);
+    EvaluatorOptions o;
+    o.threads = a.threads ? a.threads : defaultThreads();
+    o.inputBase = std::filesystem::path(a.path).parent_path().string();
+    o.outputDir = a.output;
+    o.cacheBytes = std::size_t(a.cacheMB * 1024 * 1024);
+    // One evaluation needs no cache: results are dropped as soon as nothing
+    // downstream needs them. Entries of --foreach share what does not
+    // depend on the entry.
+    o.retainIntermediate = !a.foreach.empty();
+    try {
+        return evaluatePipeline(g, a, global, o);
+    } catch (const GraphError& e) {
+        report(e.diagnostics());
+        return kBadInput;
+    }
 }
 
 }  // namespace
 
 void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
     auto* cmd = app.add_subcommand("run", "Run a pipeline: evaluate every output node (e.g. ImageWriter)");
-    struct Args {
-        std::string path;
-        std::vector<std::string> sets;
-        std::string output;
-        int threads = 0;
-        std::string foreach;
-        std::string where;
-        std::string index;
-        bool resume = false;
-        bool profile = false;
-        double cacheMB = 2048;
-    };
-    auto a = std::make_shared<Args>();
+    auto a = std::make_shared<RunArgs>();
     cmd->add_option("PIPELINE", a->path, "Pipeline YAML file")->required();
     cmd->add_option("--set", a->sets, "Override a parameter: node.port=value (repeatable)")->type_name("NODE.PORT=VALUE");
     cmd->add_option("-o,--output", a->output, "Directory for relative output paths (default: the pipeline's folder)")
@@ -98,73 +190,7 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
                     "dropped first; default 2048)")
         ->check(CLI::NonNegativeNumber)
         ->type_name("MB");
-    cmd->callback([&global, &run, a] {
-        run = [&global, a] {
-            const Registry& r = loadRegistry(global);
-            Diagnostics d;
-            Graph g = loadPipeline(a->path, r, d);
-            // Every rank meets the same problems in the same files: one says so.
-            if (processes().root()) report(d);
-            if (hasErrors(d)) return int(kBadInput);
-            for (const auto& s : a->sets)
-                if (!applySet(g, s)) return int(kBadInput);
-            Diagnostics problems = g.validate();
-            if (hasErrors(problems)) {
-                for (auto& x : problems) x.where = a->path + ": " + x.where;
-                if (processes().root()) report(problems);
-                return int(kBadInput);
-            }
-            if (!a->output.empty()) std::filesystem::create_directories(a->output);
-            EvaluatorOptions o;
-            o.threads = a->threads ? a->threads : defaultThreads();
-            o.inputBase = std::filesystem::path(a->path).parent_path().string();
-            o.outputDir = a->output;
-            o.cacheBytes = std::size_t(a->cacheMB * 1024 * 1024);
-            // One evaluation needs no cache: results are dropped as soon as
-            // nothing downstream needs them. Entries of --foreach share what
-            // does not depend on the entry.
-            o.retainIntermediate = !a->foreach.empty();
-            // Under mpirun, rank 0 alone draws the bar.
-            ProgressBar bar("run", showProgress(global));
-            o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
-            o.onWarning = [&bar](const Diagnostic& w) {
-                bar.finish();
-                report({w});
-            };
-            Evaluator ev(o);
-            auto evaluate = [&](const std::string& title, std::vector<std::string> sinks = {}) {
-                const auto t0 = std::chrono::steady_clock::now();
-                ev.run(g, std::move(sinks));
-                if (a->profile) {
-                    bar.finish();
-                    printProfile(title, ev.lastProfile(),
-                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-                }
-            };
-            try {
-                if (a->foreach.empty()) {
-                    // One evaluation is not shared out: rank 0 runs it.
-                    if (processes().size > 1) {
-                        if (!processes().root()) return int(kOk);
-                        if (!global.quiet)
-                            fmt::print(stderr, "darkroom: note: without --foreach there is one evaluation; rank 0 "
-                                               "runs it and the other {} ranks have nothing to do\n",
-                                       processes().size - 1);
-                    }
-                    evaluate(a->path);
-                } else {
-                    const int code = runForeach(g, ev, o, bar, {a->foreach, a->where, a->index, a->resume, global.quiet}, evaluate);
-                    if (code != kOk) return code;
-                }
-            } catch (const GraphError& e) {
-                bar.finish();
-                report(e.diagnostics());
-                return int(kBadInput);
-            }
-            bar.finish();
-            return int(kOk);
-        };
-    });
+    cmd->callback([&global, &run, a] { run = [&global, a] { return runPipeline(global, *a); }; });
 }
 
 }  // namespace darkroom::cli

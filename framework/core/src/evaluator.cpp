@@ -41,6 +41,7 @@ struct Evaluator::NodeState {
     std::uint64_t valueKey = 0;
     std::vector<InputRead> reads;
     std::vector<FileStamp> files;
+    std::vector<std::string> inputs;  // what the node read: downstream outputs must spare it
     std::map<std::string, Value> outputs;
     std::map<std::string, OutputOrigin> origins;
     std::uint64_t lastUsed = 0;
@@ -131,6 +132,155 @@ std::size_t planeBytes(const std::map<std::string, Value>& outputs, std::unorder
     return total;
 }
 
+// The node's inputs: the upstream outputs (each up to date: it is in an
+// earlier wave), else the node's parameters.
+template <class States>
+Inputs gatherInputs(const Graph& g, const Node& n, const PortList& ports, const States& states, std::mutex& mutex) {
+    Inputs inputs;
+    for (const auto& in : ports.inputs) {
+        std::vector<Value> values;
+        for (const auto& e : g.edgesInto(n.name, in.name)) {
+            std::lock_guard<std::mutex> lock(mutex);
+            const auto& up = *states.at(e.from.node);
+            auto it = up.outputs.find(e.from.port);
+            if (!up.valid || it == up.outputs.end())
+                throw Error(nodeLabel(n.name, n.type) + ": upstream " + e.from.str() + " produced nothing");
+            values.push_back(it->second);
+        }
+        if (values.empty() && in.type != PortType::Image)
+            if (const Value* p = n.parameter(in.name)) values.push_back(*p);
+        if (!values.empty()) inputs[in.name] = std::move(values);
+    }
+    return inputs;
+}
+
+// What every node upstream of `node` read, from their cache records: an
+// output `node` resolves must not write over any of it.
+template <class States>
+std::vector<UpstreamInput> upstreamInputsOf(const Graph& g, const std::string& node, const States& states,
+                                            std::mutex& mutex) {
+    std::set<std::string> seen;
+    std::vector<std::string> todo{node};
+    while (!todo.empty()) {
+        const std::string at = todo.back();
+        todo.pop_back();
+        for (const Edge& e : g.edgesInto(at))
+            if (seen.insert(e.from.node).second) todo.push_back(e.from.node);
+    }
+    std::vector<UpstreamInput> out;
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& name : seen)
+        if (auto it = states.find(name); it != states.end())
+            for (const auto& path : it->second->inputs) out.push_back({name, path});
+    return out;
+}
+
+// Whether the cached result still holds: the same value inputs, the same
+// planes read, the same files. When not, `reason` says why.
+template <class State>
+bool cacheHolds(const State& st, const Inputs& inputs, std::uint64_t key, std::string& reason) {
+    bool hit = st.valid && st.valueKey == key;
+    if (!st.valid) reason = "no cached result";
+    else if (!hit) reason = "a value input changed";
+    for (std::size_t i = 0; hit && i < st.reads.size(); ++i) {
+        const Buffer* b = imageAt(inputs, st.reads[i].port, st.reads[i].index);
+        hit = b && stillMatches(st.reads[i], *b, &reason);
+        if (!b) reason = "input '" + st.reads[i].port + "' is gone";
+    }
+    for (std::size_t i = 0; hit && i < st.files.size(); ++i) {
+        hit = stampOf(st.files[i].path) == st.files[i];
+        if (!hit) reason = "file changed: " + st.files[i].path;
+    }
+    return hit;
+}
+
+// The cached outputs around the current inputs: a forwarded output is the
+// input now, a derived one the recorded fresh planes around the input's
+// planes now. Also whether any output changed.
+template <class State>
+std::pair<std::map<std::string, Value>, bool> reassemble(const State& st, const Inputs& inputs) {
+    std::map<std::string, Value> outputs = st.outputs;
+    bool changed = false;
+    for (auto& [port, value] : outputs) {
+        const OutputOrigin& o = st.origins.at(port);
+        if (o.kind == OutputOrigin::Kind::Forward) {
+            BufferPtr now = imagePtrAt(inputs, o.port, o.index);
+            if (now != value.asImage()) {
+                value = Value(std::move(now));
+                changed = true;
+            }
+        } else if (o.kind == OutputOrigin::Kind::Derived) {
+            const Buffer* in = imageAt(inputs, o.port, o.index);
+            const BufferPtr& before = value.asImage();
+            BufferPtr now = rederive(o, *before, *in);
+            if (!samePlanes(*now, *before)) {
+                value = Value(std::move(now));
+                changed = true;
+            }
+        }
+    }
+    return {std::move(outputs), changed};
+}
+
+// Fresh image outputs keep the previous planes they recomputed bit for bit.
+void keepUnchangedOutputs(NodeResult& r, const std::map<std::string, Value>& previous) {
+    for (auto& [port, value] : r.outputs) {
+        const auto* b = std::get_if<BufferPtr>(&value.storage());
+        if (!b || !*b || r.origins[port].kind == OutputOrigin::Kind::Forward) continue;
+        auto it = previous.find(port);
+        const auto* p = it == previous.end() ? nullptr : std::get_if<BufferPtr>(&it->second.storage());
+        value = Value(keepUnchangedPlanes(*b, p ? *p : nullptr));
+    }
+}
+
+// The part of the graph the targets depend on. Walked with a stack of our
+// own, not by recursion: a chain of a million nodes would overflow the
+// thread's stack.
+std::set<std::string> neededBy(const Graph& g, const std::vector<std::string>& targets) {
+    std::set<std::string> needed;
+    std::vector<std::string> toVisit(targets.rbegin(), targets.rend());
+    while (!toVisit.empty()) {
+        std::string n = std::move(toVisit.back());
+        toVisit.pop_back();
+        if (!needed.insert(n).second) continue;
+        for (const auto& e : g.edgesInto(n))
+            if (g.node(e.from.node)) toVisit.push_back(e.from.node);
+    }
+    return needed;
+}
+
+// Everything is checked before anything runs.
+void throwIfInvalid(const Graph& g, const std::set<std::string>& needed) {
+    Diagnostics problems;
+    for (auto& d : g.validate())
+        if (d.severity == Diagnostic::Severity::Error && (d.node.empty() || needed.count(d.node)))
+            problems.push_back(std::move(d));
+    if (!problems.empty()) throw GraphError(std::move(problems));
+}
+
+// Depth levels: a node runs after everything it reads; nodes of one level
+// are independent and run concurrently. In topological order every input's
+// level is known before its reader's. Also counts, per node, the readers of
+// its outputs among the needed nodes.
+std::vector<std::vector<std::string>> wavesOf(const Graph& g, const std::set<std::string>& needed,
+                                              std::map<std::string, int>& pendingReaders) {
+    std::map<std::string, int> level;
+    std::vector<std::vector<std::string>> waves;
+    for (const auto& n : g.topologicalOrder()) {
+        if (!needed.count(n)) continue;
+        int d = 0;
+        for (const auto& e : g.edgesInto(n)) {
+            auto it = level.find(e.from.node);
+            d = std::max(d, (it == level.end() ? 0 : it->second) + 1);
+            ++pendingReaders[e.from.node];
+        }
+        level[n] = d;
+        if (int(waves.size()) <= d) waves.resize(std::size_t(d) + 1);
+        waves[std::size_t(d)].push_back(n);
+    }
+    return waves;
+}
+
 }  // namespace
 
 Evaluator::Evaluator(EvaluatorOptions options) : options_(std::move(options)) {}
@@ -212,41 +362,11 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
     } clear{external ? nullptr : &cancelled_};
     const std::atomic<bool>& cancel = external ? *external : cancelled_;
 
-    // The part of the graph the targets depend on.
-    // Walked with a stack of our own, not by recursion: a chain of a million
-    // nodes would overflow the thread's stack.
-    std::set<std::string> needed;
-    std::vector<std::string> toVisit(targets.rbegin(), targets.rend());
-    while (!toVisit.empty()) {
-        std::string n = std::move(toVisit.back());
-        toVisit.pop_back();
-        if (!needed.insert(n).second) continue;
-        for (const auto& e : g.edgesInto(n))
-            if (g.node(e.from.node)) toVisit.push_back(e.from.node);
-    }
-
-    // Everything is checked before anything runs.
-    Diagnostics problems;
-    for (auto& d : g.validate())
-        if (d.severity == Diagnostic::Severity::Error && (d.node.empty() || needed.count(d.node)))
-            problems.push_back(std::move(d));
-    if (!problems.empty()) throw GraphError(std::move(problems));
-
-    // Depth levels: a node runs after everything it reads; nodes of one level
-    // are independent and run concurrently.
-    // In topological order every input's level is known before its reader's.
-    std::map<std::string, int> level;
-    auto depth = [&](const std::string& n) -> int {
-        int d = 0;
-        for (const auto& e : g.edgesInto(n)) {
-            auto it = level.find(e.from.node);
-            d = std::max(d, (it == level.end() ? 0 : it->second) + 1);
-        }
-        return level[n] = d;
-    };
-    std::vector<std::vector<std::string>> waves;
+    const std::set<std::string> needed = neededBy(g, targets);
+    throwIfInvalid(g, needed);
     // Outputs still to be read in this evaluation, for retainIntermediate = false.
     std::map<std::string, int> pendingReaders;
+    const std::vector<std::vector<std::string>> waves = wavesOf(g, needed, pendingReaders);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         // States of nodes that were removed, renamed or retyped are freed.
@@ -259,15 +379,8 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
         }
         ++clock_;
         profile_.clear();
-        for (const auto& n : g.topologicalOrder()) {
-            if (!needed.count(n)) continue;
-            auto& st = states_[n];
-            if (!st) st = std::make_unique<NodeState>();
-            const int d = depth(n);
-            if (int(waves.size()) <= d) waves.resize(std::size_t(d) + 1);
-            waves[std::size_t(d)].push_back(n);
-            for (const auto& e : g.edgesInto(n)) ++pendingReaders[e.from.node];
-        }
+        for (const auto& n : needed)
+            if (auto& st = states_[n]; !st) st = std::make_unique<NodeState>();
     }
     const std::set<std::string> targetSet(targets.begin(), targets.end());
 
@@ -338,66 +451,14 @@ void Evaluator::enforceCap(const std::set<std::string>& targets) {
 
 void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std::atomic<bool>& cancel) {
     const PortList& ports = g.ports(n);
-    const std::string label = nodeLabel(n.name, n.type);
-
-    // Inputs: the upstream outputs (each up to date: it is in an earlier
-    // wave), else the node's parameters.
-    Inputs inputs;
-    for (const auto& in : ports.inputs) {
-        std::vector<Value> values;
-        for (const auto& e : g.edgesInto(n.name, in.name)) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            const NodeState& up = *states_.at(e.from.node);
-            auto it = up.outputs.find(e.from.port);
-            if (!up.valid || it == up.outputs.end())
-                throw Error(label + ": upstream " + e.from.str() + " produced nothing");
-            values.push_back(it->second);
-        }
-        if (values.empty() && in.type != PortType::Image)
-            if (const Value* p = n.parameter(in.name)) values.push_back(*p);
-        if (!values.empty()) inputs[in.name] = std::move(values);
-    }
+    Inputs inputs = gatherInputs(g, n, ports, states_, mutex_);
     const std::uint64_t key = valueKey(n, ports, inputs, options_);
 
     NodeProfile profile;
     profile.node = n.name;
     profile.type = n.type;
-
-    // The cache: same value inputs, same planes read, same files.
-    bool hit = st.valid && st.valueKey == key;
-    if (!st.valid) profile.reason = "no cached result";
-    else if (!hit) profile.reason = "a value input changed";
-    for (std::size_t i = 0; hit && i < st.reads.size(); ++i) {
-        const Buffer* b = imageAt(inputs, st.reads[i].port, st.reads[i].index);
-        hit = b && stillMatches(st.reads[i], *b, &profile.reason);
-        if (!b) profile.reason = "input '" + st.reads[i].port + "' is gone";
-    }
-    for (std::size_t i = 0; hit && i < st.files.size(); ++i) {
-        hit = stampOf(st.files[i].path) == st.files[i];
-        if (!hit) profile.reason = "file changed: " + st.files[i].path;
-    }
-
-    if (hit) {
-        std::map<std::string, Value> outputs = st.outputs;
-        bool changed = false;
-        for (auto& [port, value] : outputs) {
-            const OutputOrigin& o = st.origins.at(port);
-            if (o.kind == OutputOrigin::Kind::Forward) {
-                BufferPtr now = imagePtrAt(inputs, o.port, o.index);
-                if (now != value.asImage()) {
-                    value = Value(std::move(now));
-                    changed = true;
-                }
-            } else if (o.kind == OutputOrigin::Kind::Derived) {
-                const Buffer* in = imageAt(inputs, o.port, o.index);
-                const BufferPtr& before = value.asImage();
-                BufferPtr now = rederive(o, *before, *in);
-                if (!samePlanes(*now, *before)) {
-                    value = Value(std::move(now));
-                    changed = true;
-                }
-            }
-        }
+    if (cacheHolds(st, inputs, key, profile.reason)) {
+        auto [outputs, changed] = reassemble(st, inputs);
         profile.status = changed ? NodeProfile::Status::Reassembled : NodeProfile::Status::Cached;
         std::lock_guard<std::mutex> lock(mutex_);
         st.outputs = std::move(outputs);
@@ -417,6 +478,7 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
         call.outputDir = options_.outputDir;
         call.registry = &g.registry();
         call.cancel = &cancel;
+        call.upstreamInputs = [this, &g, &n] { return upstreamInputsOf(g, n.name, states_, mutex_); };
         call.onWarning = [&](const std::string& m) {
             if (!options_.onWarning) return;
             Diagnostic d;
@@ -442,16 +504,7 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
             st.outputs.clear();
         }
         NodeResult r = runNode(call);
-        for (auto& [port, value] : r.outputs) {
-            const auto* b = std::get_if<BufferPtr>(&value.storage());
-            if (!b || !*b || r.origins[port].kind == OutputOrigin::Kind::Forward) continue;
-            auto it = previous.find(port);
-            const BufferPtr before = it == previous.end() ? nullptr : [&]() -> BufferPtr {
-                const auto* p = std::get_if<BufferPtr>(&it->second.storage());
-                return p ? *p : nullptr;
-            }();
-            value = Value(keepUnchangedPlanes(*b, before));
-        }
+        keepUnchangedOutputs(r, previous);
         profile.status = NodeProfile::Status::Ran;
         profile.seconds = r.seconds;
         profile.bytesAllocated = r.bytesAllocated;
@@ -460,6 +513,7 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
         st.origins = std::move(r.origins);
         st.reads = std::move(r.reads);
         st.files = std::move(r.files);
+        st.inputs = std::move(r.inputs);
         st.valueKey = key;
         st.valid = true;
         st.lastUsed = clock_;

@@ -2,6 +2,7 @@
 // 64-bit hashes of the things a node's cache key is made of.
 #include <darkroom/buffer.h>
 #include <darkroom/value.h>
+#include <darkroom/core/hash_mix.h>
 
 #include <cstdint>
 #include <cstring>
@@ -9,33 +10,6 @@
 #include <string_view>
 
 namespace darkroom::hashing {
-
-inline std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
-    // splitmix64 finaliser over the running hash: cheap and well distributed.
-    std::uint64_t z = h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-inline std::uint64_t mixText(std::uint64_t h, std::string_view s) {
-    h = mix(h, s.size());
-    std::size_t i = 0;
-    for (; i + 8 <= s.size(); i += 8) {
-        std::uint64_t w;
-        std::memcpy(&w, s.data() + i, 8);
-        h = mix(h, w);
-    }
-    std::uint64_t tail = 0;
-    std::memcpy(&tail, s.data() + i, s.size() - i);
-    return mix(h, tail);
-}
-
-inline std::uint64_t mixDouble(std::uint64_t h, double d) {
-    std::uint64_t w;
-    std::memcpy(&w, &d, 8);
-    return mix(h, w);
-}
 
 std::uint64_t hashChannels(const std::vector<ChannelDesc>& channels);
 std::uint64_t hashMetadata(const BufferMetadata& m);

@@ -5,6 +5,7 @@
 #include <darkroom/capture_backend.h>
 #include <darkroom/error.h>
 #include <darkroom/limits.h>
+#include <darkroom/core/path_overlap.h>
 #include <darkroom/core/registry.h>
 
 #include <tbb/blocked_range.h>
@@ -86,15 +87,41 @@ const Value& HostContext::value(std::string_view port) const {
 
 std::string HostContext::resolveInputPath(std::string_view path) const {
     const fs::path p(path);
-    if (p.is_absolute() || s_.inputBase.empty()) return p.string();
-    return (fs::path(s_.inputBase) / p).lexically_normal().string();
+    std::string resolved =
+        p.is_absolute() || s_.inputBase.empty() ? p.string() : (fs::path(s_.inputBase) / p).lexically_normal().string();
+    std::lock_guard<std::mutex> lock(mutex_);
+    inputPaths_.push_back(resolved);
+    return resolved;
 }
 
 std::string HostContext::resolveOutputPath(std::string_view path) const {
     const fs::path p(path);
     const std::string& base = s_.outputDir.empty() ? s_.inputBase : s_.outputDir;
-    if (p.is_absolute() || base.empty()) return p.string();
-    return (fs::path(base) / p).lexically_normal().string();
+    std::string resolved =
+        p.is_absolute() || base.empty() ? p.string() : (fs::path(base) / p).lexically_normal().string();
+    // Refused before the node writes anything: an output that is, holds or
+    // lies inside what an upstream node read would destroy that input (a
+    // CinemaWriter overwriting the database its reader reads).
+    for (const UpstreamInput& in : s_.upstreamInputs ? s_.upstreamInputs() : std::vector<UpstreamInput>{})
+        if (pathsOverlap(resolved, in.path))
+            throw InputError("the output " + resolved + " " + overlapWording(resolved, in.path) + " " + in.path +
+                             ", which node '" + in.node + "' upstream reads; writing there would destroy the input. "
+                             "Choose an output outside the inputs");
+    return resolved;
+}
+
+std::vector<std::string> HostContext::inputsRead() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::string> out;
+    const auto add = [&out](const std::vector<std::string>& list) {
+        for (const auto& f : list) {
+            const std::string a = absoluteNormal(f);
+            if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+        }
+    };
+    add(inputPaths_);
+    add(files_);
+    return out;
 }
 
 void HostContext::readsFile(const std::string& path) {

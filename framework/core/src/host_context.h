@@ -7,6 +7,7 @@
 // input's planes and is remembered, so the evaluator can later re-assemble
 // the output around new input planes without running the filter.
 #include "tracked_buffer.h"
+#include "upstream_input.h"
 
 #include <darkroom/context.h>
 #include <darkroom/port.h>
@@ -36,6 +37,11 @@ public:
         const std::atomic<bool>* cancelFlag = nullptr;
         std::function<void(double)> onProgress;
         std::function<void(const std::string&)> onWarning;
+        // What the nodes upstream of this one read (files and input paths
+        // they resolved), so that an output overwriting them is refused.
+        // Asked for only when the node resolves an output path: a walk of
+        // everything upstream for every node would cost a long chain N².
+        std::function<std::vector<UpstreamInput>()> upstreamInputs;
     };
 
     // What derive() was asked for, per buffer it made.
@@ -72,6 +78,9 @@ public:
     const std::map<std::pair<std::string, int>, std::unique_ptr<ReadLog>>& readLogs() const { return logs_; }
     const Derivation* derivation(const Buffer* b) const;
     const std::vector<std::string>& filesRead() const { return files_; }
+    // The paths the filter itself resolved as inputs and the files it said
+    // it read, absolute: what a downstream output must not overwrite.
+    std::vector<std::string> inputsRead() const;
     std::size_t bytesAllocated() const { return bytes_.load(); }
     // Whether the node has run past limit(Limit::NodeMilliseconds) since this
     // context was made; cancelled() turns true then too, so the node stops
@@ -91,6 +100,7 @@ private:
     mutable std::mutex mutex_;  // derivations_, files_ (filters may call from worker threads)
     std::map<const Buffer*, Derivation> derivations_;
     std::vector<std::string> files_;
+    mutable std::vector<std::string> inputPaths_;  // resolveInputPath() results
     std::atomic<std::size_t> bytes_{0};
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     std::uint64_t timeLimitMs_ = 0;  // 0: none

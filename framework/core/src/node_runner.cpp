@@ -6,6 +6,7 @@
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
 #include <darkroom/limits.h>
+#include <darkroom/channel_text.h>
 
 #include <chrono>
 #include <cstdio>
@@ -28,12 +29,6 @@ std::mutex& typeLock(const std::string& type) {
     auto& m = locks[type];
     if (!m) m = std::make_unique<std::mutex>();
     return *m;
-}
-
-std::string channelNames(const Buffer& b) {
-    std::string have;
-    for (const auto& c : b.channels()) have += (have.empty() ? "" : ", ") + c.name;
-    return have.empty() ? std::string("no channels") : have;
 }
 
 MetadataDelta deltaOf(const BufferMetadata& from, const BufferMetadata& to) {
@@ -102,21 +97,14 @@ std::string nodeLabel(const std::string& name, const std::string& type) {
     return "node '" + name + "'" + (type.empty() ? std::string() : " (" + type + ")");
 }
 
-NodeResult runNode(const NodeCall& call) {
-    const std::string label = nodeLabel(call.name, call.type);
-    const PortList& ports = *call.ports;
-    HostContext::Setup setup;
-    setup.nodeName = call.name;
-    setup.ports = call.ports;
-    setup.inputBase = call.inputBase;
-    setup.outputDir = call.outputDir;
-    setup.registry = call.registry;
-    setup.cancelFlag = call.cancel;
-    setup.onProgress = call.onProgress;
-    setup.onWarning = call.onWarning;
+namespace {
 
+// The inputs as the filter sees them: checked against their ports (required
+// channels, value ranges), an integer given to a float port widened.
+std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, const std::string& label) {
+    std::map<std::string, std::vector<Value>> out;
     for (const auto& [name, values] : call.inputs) {
-        const PortSpec* in = ports.input(name);
+        const PortSpec* in = call.ports->input(name);
         if (!in) throw Error(label + ": has no input '" + name + "'");
         std::vector<Value> vs;
         for (const auto& v : values) {
@@ -129,7 +117,7 @@ NodeResult runNode(const NodeCall& call) {
                 for (const auto& c : in->channels)
                     if (!b->hasChannel(c))
                         throw Error(label + ": input '" + in->name + "' needs channel '" + c + "', but the image has " +
-                                    channelNames(*b));
+                                    channelListText(*b));
             } else {
                 try {
                     checkValue(*in, x);
@@ -139,18 +127,17 @@ NodeResult runNode(const NodeCall& call) {
             }
             vs.push_back(std::move(x));
         }
-        if (!vs.empty()) setup.inputs[name] = std::move(vs);
+        if (!vs.empty()) out[name] = std::move(vs);
     }
-    for (const auto& in : ports.inputs)
-        if (in.type == PortType::Image && !in.optional && !in.multiple && !setup.inputs.count(in.name))
+    for (const auto& in : call.ports->inputs)
+        if (in.type == PortType::Image && !in.optional && !in.multiple && !out.count(in.name))
             throw Error(label + ": input '" + in.name + "' is not connected");
+    return out;
+}
 
-    std::unique_lock<std::mutex> typeGuard;
-    if (call.filter->threadSafety() == ThreadSafety::Unsafe)
-        typeGuard = std::unique_lock<std::mutex>(typeLock(call.type));
-    // The node's time limit counts from here, after any wait for the type lock.
-    HostContext ctx(std::move(setup));
-    const auto t0 = std::chrono::steady_clock::now();
+// The filter's execute() behind the one error boundary for every call into
+// a plugin: whatever it throws becomes an error naming the node once.
+void executeGuarded(const NodeCall& call, HostContext& ctx, const std::string& label) {
     auto overTime = [&] {
         char seconds[32];
         std::snprintf(seconds, sizeof seconds, "%g", double(limit(Limit::NodeMilliseconds)) / 1000.0);
@@ -175,25 +162,23 @@ NodeResult runNode(const NodeCall& call) {
         // (std::out_of_range: "map::at"): named as such, not shown bare.
         throw Error(label + ": unexpected failure inside the node (a bug; please report it): " + e.what());
     } catch (const std::exception& e) {
-        // One error boundary for every call into a plugin.
         throw Error(label + ": " + e.what());
     } catch (...) {
         throw Error(label + ": failed with an unknown exception");
     }
     if (ctx.overTime()) throw overTime();
     if (ctx.cancelled()) throw Cancelled();
+}
 
-    NodeResult r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.bytesAllocated = ctx.bytesAllocated();
-    for (const auto& out : ports.outputs)
-        if (!ctx.outputs().count(out.name)) throw Error(label + " did not produce its output '" + out.name + "'");
+BufferPtr inputBuffer(const HostContext& ctx, const std::string& port, int index) {
+    auto it = ctx.setup().inputs.find(port);
+    if (it == ctx.setup().inputs.end() || index >= int(it->second.size())) return nullptr;
+    return it->second[std::size_t(index)].asImage();
+}
 
-    auto inputBuffer = [&](const std::string& port, int index) -> BufferPtr {
-        auto it = ctx.setup().inputs.find(port);
-        if (it == ctx.setup().inputs.end() || index >= int(it->second.size())) return nullptr;
-        return it->second[std::size_t(index)].asImage();
-    };
+// How each output came about (the input passed on, derived from an input,
+// or fresh), its planes sealed.
+void recordOutputs(HostContext& ctx, NodeResult& r) {
     for (auto& [port, value] : ctx.outputs()) {
         OutputOrigin o;
         if (const auto* b = std::get_if<BufferPtr>(&value.storage()); b && *b) {
@@ -201,13 +186,12 @@ NodeResult runNode(const NodeCall& call) {
             std::string inPort;
             int index = 0;
             if (TrackedBuffer::origin(buffer.get(), inPort, index)) {
-                // The input itself, passed on.
-                o.kind = OutputOrigin::Kind::Forward;
+                o.kind = OutputOrigin::Kind::Forward;  // the input itself, passed on
                 o.port = inPort;
                 o.index = index;
                 buffer = TrackedBuffer::unwrap(buffer);
             } else if (const auto* d = ctx.derivation(buffer.get())) {
-                const BufferPtr in = inputBuffer(d->port, d->index);
+                const BufferPtr in = inputBuffer(ctx, d->port, d->index);
                 if (in && stillDerived(*buffer, *in, *d)) {
                     o.kind = OutputOrigin::Kind::Derived;
                     o.port = d->port;
@@ -227,9 +211,12 @@ NodeResult runNode(const NodeCall& call) {
         r.origins[port] = std::move(o);
         r.outputs[port] = std::move(value);
     }
+}
 
+// What the filter read of each image input: the cache's key.
+void recordReads(const HostContext& ctx, NodeResult& r) {
     for (const auto& [key, log] : ctx.readLogs()) {
-        const BufferPtr in = inputBuffer(key.first, key.second);
+        const BufferPtr in = inputBuffer(ctx, key.first, key.second);
         if (!in) continue;
         InputRead read;
         read.port = key.first;
@@ -250,16 +237,59 @@ NodeResult runNode(const NodeCall& call) {
         }
         r.reads.push_back(std::move(read));
     }
+}
 
+// The files the node depends on: those it said it read and every Path (and
+// file colour map) input, stamped.
+void recordFiles(const HostContext& ctx, const PortList& ports, const std::string& inputBase, NodeResult& r) {
+    r.inputs = ctx.inputsRead();
     std::vector<std::string> files = ctx.filesRead();
     for (const auto& in : ports.inputs) {
         const bool file = in.type == PortType::Path ||
                           (in.type == PortType::ColorMap && !isColorMapPreset(ctx.value(in.name).asString()));
         if (!file) continue;
-        const std::string& path = ctx.value(in.name).asString();
-        if (!path.empty()) files.push_back(ctx.resolveInputPath(path));
+        const fs::path path(ctx.value(in.name).asString());
+        if (path.empty()) continue;
+        // Resolved as HostContext::resolveInputPath does, without recording
+        // it as read: an output path is stamped too, but is no input.
+        files.push_back(path.is_absolute() || inputBase.empty() ? path.string()
+                                                                : (fs::path(inputBase) / path).lexically_normal().string());
     }
     for (const auto& f : files) r.files.push_back(stampOf(f));
+}
+
+}  // namespace
+
+NodeResult runNode(const NodeCall& call) {
+    const std::string label = nodeLabel(call.name, call.type);
+    HostContext::Setup setup;
+    setup.nodeName = call.name;
+    setup.ports = call.ports;
+    setup.inputBase = call.inputBase;
+    setup.outputDir = call.outputDir;
+    setup.registry = call.registry;
+    setup.cancelFlag = call.cancel;
+    setup.onProgress = call.onProgress;
+    setup.onWarning = call.onWarning;
+    setup.upstreamInputs = call.upstreamInputs;
+    setup.inputs = checkedInputs(call, label);
+
+    std::unique_lock<std::mutex> typeGuard;
+    if (call.filter->threadSafety() == ThreadSafety::Unsafe)
+        typeGuard = std::unique_lock<std::mutex>(typeLock(call.type));
+    // The node's time limit counts from here, after any wait for the type lock.
+    HostContext ctx(std::move(setup));
+    const auto t0 = std::chrono::steady_clock::now();
+    executeGuarded(call, ctx, label);
+
+    NodeResult r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.bytesAllocated = ctx.bytesAllocated();
+    for (const auto& out : call.ports->outputs)
+        if (!ctx.outputs().count(out.name)) throw Error(label + " did not produce its output '" + out.name + "'");
+    recordOutputs(ctx, r);
+    recordReads(ctx, r);
+    recordFiles(ctx, *call.ports, call.inputBase, r);
     return r;
 }
 

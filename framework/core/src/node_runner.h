@@ -4,6 +4,8 @@
 // boundary (an exception becomes an error naming the node once), outputs
 // checked, planes sealed, and a record of what the filter read and how each
 // output relates to its inputs — what the evaluator's cache is keyed on.
+#include "upstream_input.h"
+
 #include <darkroom/filter.h>
 #include <darkroom/core/registry.h>
 
@@ -75,6 +77,9 @@ struct NodeCall {
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(double)> onProgress;
     std::function<void(const std::string&)> onWarning;
+    // What the nodes upstream read: an output over one of them is refused
+    // (HostContext::Setup::upstreamInputs).
+    std::function<std::vector<UpstreamInput>()> upstreamInputs;
 };
 
 struct NodeResult {
@@ -82,6 +87,7 @@ struct NodeResult {
     std::map<std::string, OutputOrigin> origins;
     std::vector<InputRead> reads;
     std::vector<FileStamp> files;  // readsFile() and every Path input
+    std::vector<std::string> inputs;  // HostContext::inputsRead(): what downstream outputs must spare
     std::size_t bytesAllocated = 0;
     double seconds = 0;
 };

@@ -4,6 +4,7 @@
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
 #include <darkroom/core/pipeline.h>
+#include <darkroom/strings.h>
 
 #include <yaml-cpp/yaml.h>
 
@@ -39,6 +40,7 @@ struct Reader {
 
 bool needsQuotes(const std::string& s);
 std::string quoted(const std::string& s);
+std::string doubleQuoted(const std::string& s);
 
 // "; did you mean 'parameters'?" when `key` looks like a misspelling of a valid key.
 std::string suggestion(const std::string& key, const std::vector<std::string>& valid) {
@@ -54,10 +56,9 @@ std::string flowText(const YAML::Node& n, bool inFlow = false) {
         const std::string& s = n.Scalar();
         const bool wasQuoted = n.Tag() == "!";
         const bool flowUnsafe = inFlow && s.find_first_of(",[]{}") != std::string::npos;
-        if ((wasQuoted && needsQuotes(s)) || flowUnsafe) {
-            const std::string q = quoted(s);
-            return q.front() == '"' ? q : "\"" + s + "\"";
-        }
+        // Quoted with escapes: a value with a comma and a quote or a
+        // backslash once came out as invalid YAML.
+        if ((wasQuoted && needsQuotes(s)) || flowUnsafe) return doubleQuoted(s);
         return s;
     }
     if (n.IsSequence()) {
@@ -106,11 +107,6 @@ bool parseEndpoint(const std::string& text, Endpoint& e) {
         return !s.empty();
     };
     return ok(e.node) && ok(e.port);
-}
-
-std::string trim(const std::string& s) {
-    std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
 void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
@@ -219,8 +215,8 @@ void readEdges(Graph& g, const YAML::Node& edges, Reader& r) {
         const std::string text = e.Scalar();
         const auto arrow = text.find("->");
         Endpoint from, to;
-        if (arrow == std::string::npos || !parseEndpoint(trim(text.substr(0, arrow)), from) ||
-            !parseEndpoint(trim(text.substr(arrow + 2)), to)) {
+        if (arrow == std::string::npos || !parseEndpoint(std::string(trimBlanks(text.substr(0, arrow))), from) ||
+            !parseEndpoint(std::string(trimBlanks(text.substr(arrow + 2))), to)) {
             r.error(m, "cannot read edge '" + text + "'; expected 'node.port -> node.port'");
             continue;
         }
@@ -267,8 +263,9 @@ bool needsQuotes(const std::string& s) {
     return lower == ".inf" || lower == "-.inf" || lower == ".nan";
 }
 
-std::string quoted(const std::string& s) {
-    if (!needsQuotes(s)) return s;
+std::string quoted(const std::string& s) { return needsQuotes(s) ? doubleQuoted(s) : s; }
+
+std::string doubleQuoted(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         switch (c) {

@@ -10,6 +10,7 @@
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
+#include <darkroom/channel_text.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -29,12 +30,6 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) {
     throw Error("cannot write image '" + path + "': " + why);
-}
-
-std::string listChannels(const Buffer& b) {
-    std::string s;
-    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name + " (" + toString(c.type) + ")";
-    return s.empty() ? std::string("none") : s;
 }
 
 void checkCompression(const std::string& path, const std::string& compression) {
@@ -109,7 +104,7 @@ void writeExr(const Buffer& image, const std::string& path, const ImageWriteOpti
     } else {
         for (const auto& name : options.channels) {
             const auto type = image.channelType(name);
-            if (!type) fail(path, "the image has no channel '" + name + "'; it has " + listChannels(image));
+            if (!type) fail(path, "the image has no channel '" + name + "'; it has " + channelListText(image, true));
             channels.push_back({name, *type});
         }
     }

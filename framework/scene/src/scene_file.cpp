@@ -211,7 +211,9 @@ private:
                         fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
                                                       " needs 3D cells, and '" + path + "' has none");
                 }
-                if (group_ && partition::isParallelVtk(path)) {
+                // A point list is not ray traced, so not shared out: every
+                // process reads it whole and the lead writes it whole.
+                if (group_ && !loadingPointList_ && partition::isParallelVtk(path)) {
                     loadedPieceWise_ = true;
                     return partition::readParallelVtkPieces(path, group_, &warnings);
                 }
@@ -259,7 +261,9 @@ private:
         else if (o["generator"]) name = text(o["generator"], "generator");
         const std::optional<VolumeRepresentation> volumeRep = volumeRepresentation(o);
         loadedPieceWise_ = false;
+        loadingPointList_ = asPointList;
         std::vector<SceneObject> parts = loadParts(o, name, warnings, volumeRep);
+        loadingPointList_ = false;
 
         Vec3 scale{1, 1, 1}, translate{0, 0, 0};
         if (const YAML::Node s = o["scale"]) {
@@ -518,6 +522,7 @@ private:
     ProcessGroup* group_ = nullptr;
     mutable bool loadedPieceWise_ = false;  // set by loadParts for the object being loaded
     std::vector<bool> pieceWise_;
+    bool loadingPointList_ = false;
 };
 
 [[noreturn]] void yamlError(const std::string& sourceName, const YAML::Exception& e) {
@@ -601,8 +606,6 @@ PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group)
     partition::agreeNoError(error, group);
     return parseSceneFilePart(text, path, std::filesystem::path(path).parent_path().string(), group);
 }
-
-ProcessGroup::~ProcessGroup() = default;
 
 std::pair<std::size_t, std::size_t> blockOf(std::size_t count, int rank, int size) {
     const auto at = [&](int r) { return std::size_t((unsigned long long)count * unsigned(r) / unsigned(size)); };

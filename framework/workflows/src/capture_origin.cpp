@@ -1,4 +1,6 @@
-#include "capture_origin.h"
+#include <darkroom/workflows/capture_origin.h>
+
+#include "content_hash.h"
 
 #include <darkroom/input_file.h>
 
@@ -8,29 +10,13 @@
 #include <filesystem>
 #include <set>
 
-namespace darkroom::cli {
-
-namespace {
-
-// FNV-1a: it tells a changed file from an unchanged one; it is not meant
-// to resist a forger.
-struct Hash {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    void add(std::string_view s) {
-        for (unsigned char c : s) h = (h ^ c) * 0x100000001b3ull;
-        h = (h ^ 0xff) * 0x100000001b3ull;  // a separator, so ("ab","c") differs from ("a","bc")
-    }
-    void add(double v) { add(fmt::format("{}", v)); }
-    std::string hex() const { return fmt::format("{:016x}", h); }
-};
-
-}  // namespace
+namespace darkroom::workflows {
 
 std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const SceneDescription& scene,
                                             const std::string& compression, bool half) {
     const std::string scenePart = "the scene file", options = "the capture options";
     std::set<std::string> sizes;
-    Hash poses;
+    ContentHash poses;
     for (const auto& c : scene.cameras) {
         sizes.insert(fmt::format("{}x{}", c.camera.width, c.camera.height));
         for (const auto& [k, v] : c.parameters) {
@@ -51,12 +37,12 @@ std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const 
     if (scene.request.normals) addChannel("normals");
     if (scene.request.objectId) addChannel("objectId");
     if (scene.request.primitiveId) addChannel("primitiveId");
-    Hash content;
+    ContentHash content;
     content.add(readInputFile(sceneFile, "scene file"));
     // The files the scene reads, by name, size and modification time (the
     // quick check of make and rsync): hashing a 300-million-triangle mesh's
     // bytes would cost more than many captures.
-    Hash files;
+    ContentHash files;
     for (const auto& f : scene.inputFiles) {
         std::error_code sizeError, timeError;
         const auto size = std::filesystem::file_size(f, sizeError);
@@ -84,4 +70,4 @@ std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const 
     return origin;
 }
 
-}  // namespace darkroom::cli
+}  // namespace darkroom::workflows

@@ -1,10 +1,12 @@
-#include "database_sinks.h"
+#include <darkroom/workflows/written_databases.h>
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/csv.h>
 #include <darkroom/data/cinema/naming.h>
+#include <darkroom/data/cinema/pipeline_origin.h>
 #include <darkroom/data/cinema/writer.h>
+#include <darkroom/workflows/staging.h>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -12,7 +14,7 @@
 #include <algorithm>
 #include <filesystem>
 
-namespace darkroom::cli {
+namespace darkroom::workflows {
 
 namespace fs = std::filesystem;
 
@@ -31,104 +33,6 @@ CinemaWriterOptions modeOptions(const DatabaseSink& sink) {
     return o;
 }
 
-// What the staging databases hold complete, in the order of their folders
-// and rows, with the columns and file naming they were written with.
-struct Staged {
-    std::vector<std::string> columns;
-    CinemaWriterOptions options;  // product extension and attachment columns
-    std::vector<CinemaStagedEntry> entries;
-};
-
-// The file that marks a staging folder as Darkroom's: without it, the folder
-// is someone else's and is neither read nor removed.
-constexpr const char* kStagingMarker = ".darkroom-staging";
-
-bool isRankFolderName(const std::string& name) {
-    return name.size() > 5 && name.compare(0, 5, "rank-") == 0 &&
-           std::all_of(name.begin() + 5, name.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-// The staging databases: real folders named rank-<k> (never links).
-std::vector<fs::path> stagingDatabases(const fs::path& folder) {
-    std::vector<fs::path> parts;
-    std::error_code ec;
-    if (!fs::is_directory(fs::symlink_status(folder, ec))) return parts;
-    for (const auto& e : fs::directory_iterator(folder))
-        if (fs::is_directory(e.symlink_status()) && isRankFolderName(e.path().filename().string()))
-            parts.push_back(e.path());
-    std::sort(parts.begin(), parts.end());
-    return parts;
-}
-
-// A staged file as data.csv names it: a plain file name inside its staging
-// database, a regular file there (not a link). Anything else is refused,
-// so a planted data.csv can never make the merge move a file in from outside.
-fs::path stagedFile(const fs::path& part, const std::string& cell, const fs::path& csv) {
-    const fs::path name(cell);
-    if (cell.empty() || cell == "." || cell == ".." || cell.find('/') != std::string::npos ||
-        cell.find('\0') != std::string::npos || name.filename() != name)
-        throw Error(fmt::format("{}: '{}' is not a file name inside the staging database {}; refusing to adopt it",
-                                csv.string(), cell, part.string()));
-    const fs::path file = part / name;
-    std::error_code ec;
-    const auto st = fs::symlink_status(file, ec);
-    if (fs::exists(st) && !fs::is_regular_file(st))
-        throw Error(fmt::format("{}: '{}' is not a plain file (a link or a folder); refusing to adopt it",
-                                csv.string(), file.string()));
-    return file;
-}
-
-Staged readStaged(const DatabaseSink& sink) {
-    Staged out;
-    std::vector<std::string> header;
-    fs::path first;
-    for (const auto& part : stagingDatabases(stagingFolder(sink))) {
-        const fs::path csv = part / "data.csv";
-        if (!fs::is_regular_file(csv)) continue;  // a rank stopped before its first entry
-        CsvReadOptions strict;
-        strict.strict = true;
-        const CsvTable t = readCsvFile(csv.string(), strict);
-        const auto fileColumn = std::find(t.header.begin(), t.header.end(), "FILE");
-        if (fileColumn == t.header.end())
-            throw Error(fmt::format("{}: no FILE column; {} is not a staging database Darkroom wrote", csv.string(),
-                                    part.string()));
-        if (header.empty()) {
-            header = t.header;
-            first = part;
-            // What the node recorded there, for the database to record (and a resume to compare).
-            out.options.origin = CinemaWriter::recordedOrigin(part.string());
-        } else if (t.header != header) {
-            throw Error(fmt::format("the staging databases {} and {} have different columns ({} and {}); they "
-                                    "come from different pipelines",
-                                    first.string(), part.string(), fmt::join(header, ","), fmt::join(t.header, ",")));
-        }
-        const std::size_t f = std::size_t(fileColumn - t.header.begin());
-        for (const auto& row : t.rows) {
-            // Files are renamed into place whole: one that exists is complete.
-            std::error_code ec;
-            CinemaStagedEntry e;
-            e.product = stagedFile(part, row[f], csv).string();
-            bool complete = fs::is_regular_file(e.product, ec) && fs::file_size(e.product, ec) > 0;
-            for (std::size_t k = f + 1; k < row.size(); ++k) {
-                e.attachments[t.header[k]] = stagedFile(part, row[k], csv).string();
-                complete = complete && fs::is_regular_file(e.attachments[t.header[k]], ec);
-            }
-            if (!complete) continue;  // shaded again
-            for (std::size_t c = 0; c < f; ++c) e.parameters.emplace(t.header[c], CinemaValue(row[c]));
-            if (out.entries.empty()) {
-                // The naming the writer used: "<entry><extension>", "<entry><suffix>".
-                out.options.productExtension = fs::path(row[f]).extension().string();
-                const std::string entry = row[f].substr(0, row[f].size() - out.options.productExtension.size());
-                for (std::size_t k = f + 1; k < row.size(); ++k)
-                    out.options.attachments.push_back({t.header[k], row[k].substr(std::min(entry.size(), row[k].size()))});
-            }
-            out.entries.push_back(std::move(e));
-        }
-        out.columns.assign(header.begin(), header.begin() + std::ptrdiff_t(f));
-    }
-    return out;
-}
-
 }  // namespace
 
 std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::string>& sinks,
@@ -140,7 +44,8 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
         if (!g.ports(*n).input("row") || g.edgesInto(name, "row").empty() || !database ||
             database->type != PortType::Path)
             continue;
-        DatabaseSink sink{name, n->type, valueOf(g, *n, "database"), valueOf(g, *n, "mode"), valueOf(g, *n, "format")};
+        DatabaseSink sink{name, n->type, valueOf(g, *n, "database"), valueOf(g, *n, "mode"), valueOf(g, *n, "format"),
+                          g.ports(*n).input("pipeline") ? valueOf(g, *n, "pipeline") : std::string()};
         if (!g.edgesInto(name, "database").empty()) {
             if (!overRanks) continue;
             throw Error(label(sink) + ": its database comes through an edge; under mpirun give it as a "
@@ -185,26 +90,42 @@ bool ownStagingFolder(const DatabaseSink& sink) {
     std::error_code ec;
     const auto st = fs::symlink_status(folder, ec);
     if (!fs::exists(st)) return false;
-    if (!fs::is_directory(st) || !fs::is_regular_file(fs::symlink_status(folder / kStagingMarker, ec)))
+    if (!fs::is_directory(st) || !fs::is_regular_file(fs::symlink_status(folder / workflows::kStagingMarker, ec)))
         throw Error(fmt::format("{} exists and Darkroom did not make it (no {} inside); runs over MPI ranks stage "
                                 "their entries there, so move it away (nothing in it was touched)",
-                                folder.string(), kStagingMarker));
+                                folder.string(), workflows::kStagingMarker));
     return true;
+}
+
+// A resume adds entries to what an earlier run wrote: refused when that run's
+// pipeline was another (D6 of issue 26), before anything is shaded.
+void checkSamePipeline(const DatabaseSink& sink, const std::string& database) {
+    if (sink.mode != "resume" || sink.pipeline.empty() || !fs::is_regular_file(fs::path(database) / "data.csv")) return;
+    const std::string change =
+        describePipelineChange(CinemaWriter::recordedOrigin(database), pipelineOriginItems(sink.pipeline));
+    if (!change.empty())
+        throw InputError(fmt::format("cannot resume {}: {} changed since the database was begun ({}); its entries "
+                                     "would mix with entries shaded otherwise. Set mode to overwrite to start afresh",
+                                     database, kUpstreamPipelineSource, change));
 }
 
 void prepare(const DatabaseSink& sink) {
     CinemaWriter::check(sink.database, modeOptions(sink));
+    checkSamePipeline(sink, sink.database);
     const fs::path folder = stagingFolder(sink);
     if (!ownStagingFolder(sink)) return;
     // A staging database that is locked is being written by a run now.
     CinemaWriterOptions resume;
     resume.resume = true;
-    for (const auto& part : stagingDatabases(folder)) CinemaWriter::check(part.string(), resume);
+    for (const auto& part : workflows::stagingDatabases(folder)) {
+        CinemaWriter::check(part.string(), resume);
+        checkSamePipeline(sink, part.string());
+    }
     if (sink.mode == "resume") {
         mergeStagedEntries(sink);
         return;
     }
-    const std::size_t staged = readStaged(sink).entries.size();
+    const std::size_t staged = workflows::readStagedDatabases(stagingFolder(sink)).entries.size();
     if (sink.mode != "overwrite" && staged > 0)
         throw Error(fmt::format("database {}: an interrupted run over MPI ranks left {} entries staged in {}; "
                                 "set mode to resume to complete the database with them, or to overwrite to "
@@ -216,7 +137,7 @@ void prepare(const DatabaseSink& sink) {
 void merge(const DatabaseSink& sink) {
     const fs::path folder = stagingFolder(sink);
     if (!ownStagingFolder(sink)) return;
-    Staged staged = readStaged(sink);
+    workflows::StagedEntries staged = workflows::readStagedDatabases(stagingFolder(sink));
     if (!staged.entries.empty()) {
         CinemaWriterOptions o = staged.options;
         const CinemaWriterOptions mode = modeOptions(sink);
@@ -265,7 +186,7 @@ void beginStaging(const DatabaseSink& sink) {
     const fs::path folder = stagingFolder(sink);
     if (ownStagingFolder(sink)) return;
     fs::create_directories(folder);
-    writeFileAtomic((folder / kStagingMarker).string(),
+    writeFileAtomic((folder / workflows::kStagingMarker).string(),
                     "Darkroom stages the entries of " + sink.database + " here during a run over MPI ranks.\n");
 }
 
@@ -286,4 +207,4 @@ std::set<std::string> entriesKeptByResume(const DatabaseSink& sink) {
     return withFileErrors([&] { return keptEntries(sink); });
 }
 
-}  // namespace darkroom::cli
+}  // namespace darkroom::workflows

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numbers>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -63,7 +64,7 @@ TEST(CameraNode, PerspectiveValuesReconstructTheFocalPointAndTheFrustum) {
     EXPECT_NEAR(centre.y, 2, 1e-12);
     EXPECT_NEAR(centre.z, 3, 1e-12);
     // The top edge at depth 5 lies 5 tan(20 deg) above it (vertical view angle, as vtkCamera's).
-    EXPECT_NEAR(c.worldPosition(32, 0, 5).y, 2 + 5 * std::tan(20 * M_PI / 180), 1e-12);
+    EXPECT_NEAR(c.worldPosition(32, 0, 5).y, 2 + 5 * std::tan(20 * std::numbers::pi / 180), 1e-12);
     EXPECT_EQ(out->metadata().attributes.at("camera.source"), "Camera 'runFilter'");
 }
 

@@ -1,6 +1,7 @@
 #include "scene_builders.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace darkroom::test {
 
@@ -32,7 +33,7 @@ SceneObject makeQuad(Vec3 corner, Vec3 e1, Vec3 e2) {
 SceneObject makeSphereMesh(Vec3 c, double r, int rings, int segments) {
     SceneObject o;
     o.name = "sphere-mesh";
-    const double pi = 3.14159265358979323846;
+    const double pi = std::numbers::pi;
     for (int i = 0; i <= rings; ++i) {
         const double th = pi * i / rings;
         for (int j = 0; j < segments; ++j) {

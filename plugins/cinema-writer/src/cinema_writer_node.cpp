@@ -3,6 +3,7 @@
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/row.h>
 #include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/pipeline_origin.h>
 #include <darkroom/data/cinema/writer.h>
 
 #include <filesystem>
@@ -17,6 +18,7 @@ struct CinemaWriterNode::Open {
     Mode mode;
     std::string compression;
     std::vector<std::string> channels;
+    std::string pipeline;
     std::unique_ptr<CinemaWriter> writer;
     std::set<std::string> writtenThisRun;  // product file names
 };
@@ -77,10 +79,12 @@ void CinemaWriterNode::execute(Context& ctx) {
     const std::string compression = ctx.get(compression_);
 
     const std::vector<std::string> channels = splitChannels(ctx.get(channels_));
+    const std::string& pipeline = ctx.get(pipeline_);
 
     std::lock_guard<std::mutex> g(mutex_);
     const bool reuse = open_ && open_->path == path && open_->format == format && open_->mode == mode &&
-                       open_->compression == compression && open_->channels == channels;
+                       open_->compression == compression && open_->channels == channels &&
+                       open_->pipeline == pipeline;
     if (reuse && open_->columns != columns) {
         std::string have, want;
         for (const auto& c : open_->columns) have += (have.empty() ? "" : ", ") + c;
@@ -103,11 +107,12 @@ void CinemaWriterNode::execute(Context& ctx) {
         for (const auto& c : channels) channelList += (channelList.empty() ? "" : ",") + c;
         o.origin.push_back({"the CinemaWriter settings", "channels", channelList.empty() ? "default" : channelList});
         if (format == Format::Exr) o.origin.push_back({"the CinemaWriter settings", "compression", compression});
+        for (auto& item : pipelineOriginItems(pipeline)) o.origin.push_back(std::move(item));
         std::error_code ec;
         const auto parent = std::filesystem::path(path).parent_path();
         if (!parent.empty()) std::filesystem::create_directories(parent, ec);
         auto next = std::make_unique<Open>();
-        *next = Open{path, columns, format, mode, compression, channels, nullptr, {}};
+        *next = Open{path, columns, format, mode, compression, channels, pipeline, nullptr, {}};
         next->writer = std::make_unique<CinemaWriter>(path, columns, o);
         open_ = std::move(next);
     }

@@ -22,7 +22,7 @@ public:
     CinemaWriterNode();
     ~CinemaWriterNode() override;
     PortList ports() const override {
-        return {image_, row_, database_, format_, channels_, compression_, mode_};
+        return {image_, row_, database_, format_, channels_, compression_, mode_, pipeline_};
     }
     void execute(Context& ctx) override;
 
@@ -53,6 +53,10 @@ private:
                        Mode::Create,
                        "create: refuse a database that exists and is not empty; overwrite: replace it; resume: "
                        "keep its complete entries (those are not written again) and add the others"};
+    StringIn pipeline_{"pipeline", "",
+                       "What produced the images, recorded in the database so that a resume refuses a database "
+                       "another pipeline wrote: one line per node upstream, 'node<TAB>digest'. darkroom run sets "
+                       "it (docs/publishing.md); empty: nothing recorded"};
 
     // The open database, kept (and locked) from the first entry of a run to
     // the node's end, so a --foreach run writes one database.

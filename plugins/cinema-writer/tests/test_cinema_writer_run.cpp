@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -145,4 +146,64 @@ TEST(CinemaWriterRun, SetOnAnInputFedByAnEdgeIsRefused) {
     EXPECT_EQ(run.exitCode, 2) << run.err;
     EXPECT_THAT(run.err, HasSubstr("input 'row' of node 'write' is fed by read.row"));
     EXPECT_FALSE(fs::exists(r.dir.file("out/shaded.cdb")));
+}
+
+namespace {
+
+// Every file of a folder with its bytes, to show that nothing changed.
+std::map<std::string, std::string> contentsOf(const std::string& folder) {
+    std::map<std::string, std::string> out;
+    for (const auto& e : fs::recursive_directory_iterator(folder))
+        if (e.is_regular_file()) out[e.path().string()] = test::readText(e.path().string());
+    return out;
+}
+
+}  // namespace
+
+// D1 (issue 26): a writer pointed at the database its reader reads — the
+// same folder, or one inside it — is refused before anything is written,
+// with --foreach and without, and the source keeps every byte.
+TEST(CinemaWriterRun, AWriterPointedAtItsReadersDatabaseIsRefused) {
+    Shading r;
+    const std::string source = r.dir.file("source.cdb");
+    const auto before = contentsOf(source);
+    const auto foreach = r.shade({"--set", "write.database=" + source, "--set", "write.mode=overwrite"});
+    EXPECT_EQ(foreach.exitCode, 2) << foreach.err;
+    EXPECT_THAT(foreach.err, HasSubstr("node 'write' (CinemaWriter): the output " + source + " is " + source +
+                                       ", the database node 'read' reads; writing there would destroy the input"));
+    EXPECT_EQ(contentsOf(source), before);
+
+    const auto inside = r.shade({"--set", "write.database=" + source + "/shaded.cdb"});
+    EXPECT_EQ(inside.exitCode, 2) << inside.err;
+    EXPECT_THAT(inside.err, HasSubstr("lies inside " + source));
+    EXPECT_EQ(contentsOf(source), before);
+
+    // One evaluation, no --foreach: the evaluator refuses the path the node
+    // resolves, naming the node upstream that read it.
+    const auto once = test::runDarkroom({"-q", "run", r.dir.file("shade.yaml"), "-o", r.dir.file("out"), "--set",
+                                         "write.database=" + source, "--set", "write.mode=overwrite"});
+    EXPECT_EQ(once.exitCode, 2) << once.err;
+    EXPECT_THAT(once.err, HasSubstr("the output " + source + " is " + source +
+                                    ", which node 'read' upstream reads; writing there would destroy the input"));
+    EXPECT_EQ(contentsOf(source), before);
+}
+
+// D6 (issue 26): the database records the pipeline that shaded it; a resume
+// after the pipeline changed is refused before any shading, naming the node
+// that changed, instead of mixing old and new entries. The same pipeline
+// resumes.
+TEST(CinemaWriterRun, AResumeAfterThePipelineChangedIsRefused) {
+    Shading r;
+    ASSERT_EQ(r.shade().exitCode, 0);
+    const std::string db = r.dir.file("out/shaded.cdb");
+    fs::remove(db + "/time=3.exr");
+    const auto changed = r.shade({"--resume", "--set", "write.mode=resume", "--set", "read.strict=true"});
+    EXPECT_EQ(changed.exitCode, 2) << changed.err;
+    EXPECT_THAT(changed.err, HasSubstr("cannot resume " + db + ": the pipeline upstream of the writer changed since "
+                                       "the database was begun (node 'read' (CinemaReader) changed)"));
+    EXPECT_FALSE(fs::exists(db + "/time=3.exr"));
+    EXPECT_FALSE(fs::exists(db + "/.lock"));
+    const auto same = r.shade({"--resume", "--set", "write.mode=resume"});
+    EXPECT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_TRUE(fs::is_regular_file(db + "/time=3.exr"));
 }

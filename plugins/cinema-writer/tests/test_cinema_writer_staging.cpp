@@ -1,5 +1,5 @@
 // What `darkroom run --foreach` does with <database>.staging, the folder in
-// which ranks stage their entries (apps/darkroom/database_sinks.h): it never
+// which ranks stage their entries (darkroom/workflows/written_databases.h): it never
 // deletes one Darkroom did not make (D5 of issue 26) and never takes in a
 // staged file from outside its staging databases (S2).
 #include "../../../tests/integration/runner/runner_process.h"

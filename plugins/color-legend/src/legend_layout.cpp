@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace darkroom::legend {
 
@@ -11,6 +12,48 @@ namespace {
 double snapLine(double centre, double width) {
     const bool odd = int(std::lround(width)) % 2 == 1;
     return odd ? std::floor(centre) + 0.5 : std::round(centre);
+}
+
+// The box's top-left corner on the image for the style's anchor.
+std::pair<double, double> boxCorner(const LegendStyle& s, int imageWidth, int imageHeight, double boxW, double boxH) {
+    double bx = s.x, by = s.y;
+    switch (s.anchor) {
+        case Anchor::BottomRight: bx = imageWidth - s.margin - boxW; by = imageHeight - s.margin - boxH; break;
+        case Anchor::BottomLeft: bx = s.margin; by = imageHeight - s.margin - boxH; break;
+        case Anchor::TopRight: bx = imageWidth - s.margin - boxW; by = s.margin; break;
+        case Anchor::TopLeft: bx = s.margin; by = s.margin; break;
+        case Anchor::BottomCenter: bx = (imageWidth - boxW) / 2; by = imageHeight - s.margin - boxH; break;
+        case Anchor::TopCenter: bx = (imageWidth - boxW) / 2; by = s.margin; break;
+        case Anchor::Pixel: break;
+    }
+    return {bx, by};
+}
+
+// Ticks on the bar (lines snapped to whole pixels) and their labels, moved
+// by (ox, oy); along the drawing direction, a label that would come closer
+// than `spacing` to the previous one is dropped (width 0).
+void placeTicks(const std::vector<Tick>& ticks, const std::vector<double>& positions, const std::vector<Rect>& labels,
+                bool horizontal, double ox, double oy, double spacing, LegendLayout& L) {
+    double lastEnd = -1e300;  // far edge of the last drawn label along the bar axis
+    std::vector<std::size_t> order(ticks.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    // Along the drawing direction: left to right, or top to bottom.
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return positions[a] < positions[b]; });
+    L.ticks.resize(ticks.size());
+    for (std::size_t k : order) {
+        PlacedTick& p = L.ticks[k];
+        p.tick = ticks[k];
+        const double exact = (horizontal ? L.bar.x : L.bar.y) + positions[k];
+        p.position = snapLine(exact, L.lineWidth);
+        Rect r{ox + labels[k].x, oy + labels[k].y, labels[k].w, labels[k].h};
+        const double start = horizontal ? r.x : r.y, end = horizontal ? r.right() : r.bottom();
+        if (start < lastEnd + spacing) {
+            r.w = 0;  // would collide with the previous label
+        } else {
+            lastEnd = end;
+        }
+        p.label = r;
+    }
 }
 
 }  // namespace
@@ -76,16 +119,7 @@ LegendLayout layoutLegend(const std::vector<Tick>& ticks, const LegendStyle& s, 
     const double boxH = std::ceil(bottom - top + 2 * L.padding);
 
     // The box on the image.
-    double bx = s.x, by = s.y;
-    switch (s.anchor) {
-        case Anchor::BottomRight: bx = imageWidth - s.margin - boxW; by = imageHeight - s.margin - boxH; break;
-        case Anchor::BottomLeft: bx = s.margin; by = imageHeight - s.margin - boxH; break;
-        case Anchor::TopRight: bx = imageWidth - s.margin - boxW; by = s.margin; break;
-        case Anchor::TopLeft: bx = s.margin; by = s.margin; break;
-        case Anchor::BottomCenter: bx = (imageWidth - boxW) / 2; by = imageHeight - s.margin - boxH; break;
-        case Anchor::TopCenter: bx = (imageWidth - boxW) / 2; by = s.margin; break;
-        case Anchor::Pixel: break;
-    }
+    auto [bx, by] = boxCorner(s, imageWidth, imageHeight, boxW, boxH);
     bx = std::round(bx);
     by = std::round(by);
     L.box = {bx, by, boxW, boxH};
@@ -94,27 +128,7 @@ LegendLayout layoutLegend(const std::vector<Tick>& ticks, const LegendStyle& s, 
     L.bar = {ox + bar.x, oy + bar.y, bar.w, bar.h};
     if (!s.title.empty()) L.title = {ox + title.x, oy + title.y, title.w, title.h};
 
-    double lastEnd = -1e300;  // far edge of the last drawn label along the bar axis
-    std::vector<std::size_t> order(ticks.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    // Along the drawing direction: left to right, or top to bottom.
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return positions[a] < positions[b]; });
-    L.ticks.resize(ticks.size());
-    for (std::size_t k : order) {
-        PlacedTick& p = L.ticks[k];
-        p.tick = ticks[k];
-        const double exact = (horizontal ? L.bar.x : L.bar.y) + positions[k];
-        p.position = snapLine(exact, L.lineWidth);
-        Rect r{ox + labels[k].x, oy + labels[k].y, labels[k].w, labels[k].h};
-        const double start = horizontal ? r.x : r.y, end = horizontal ? r.right() : r.bottom();
-        const double spacing = 0.5 * font;
-        if (start < lastEnd + spacing) {
-            r.w = 0;  // would collide with the previous label
-        } else {
-            lastEnd = end;
-        }
-        p.label = r;
-    }
+    placeTicks(ticks, positions, labels, horizontal, ox, oy, 0.5 * font, L);
     return L;
 }
 

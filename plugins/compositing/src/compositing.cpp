@@ -4,6 +4,7 @@
 #include "nearest_input.h"
 
 #include <darkroom/error.h>
+#include <darkroom/channel_text.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,12 +19,6 @@ namespace darkroom {
 namespace {
 
 std::string sizeText(const Buffer& b) { return std::to_string(b.width()) + "x" + std::to_string(b.height()); }
-
-std::string channelList(const Buffer& b) {
-    std::string s;
-    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name;
-    return s.empty() ? std::string("no channels") : s;
-}
 
 // What a pixel that is background in every input holds: transparent black
 // colour (so a composite of ColorMapping outputs stays displayable and matches
@@ -80,7 +75,7 @@ void Compositing::execute(Context& ctx) {
         depth[i] = b.hostFloat(depthName);
         if (!depth[i])
             throw Error("input " + std::to_string(i) + " has no float32 depth channel '" + depthName +
-                        "'; it has " + channelList(b));
+                        "'; it has " + channelListText(b));
         if (!sameView(b.metadata().camera, first.metadata().camera))
             ctx.warn("input " + std::to_string(i) +
                      " was rendered with another camera than input 0; the output keeps input 0's camera");

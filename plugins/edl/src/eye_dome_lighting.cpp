@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace darkroom {
 
@@ -19,7 +20,7 @@ struct Offset {
 std::vector<Offset> ring(double r) {
     std::vector<Offset> o;
     for (int k = 0; k < 8; ++k) {
-        const double a = 2.0 * 3.14159265358979323846 * k / 8.0;
+        const double a = 2.0 * std::numbers::pi * k / 8.0;
         int dx = int(std::lround(r * std::cos(a))), dy = int(std::lround(r * std::sin(a)));
         if (dx == 0 && dy == 0) dx = k < 4 ? 1 : -1;
         o.push_back({dx, dy});

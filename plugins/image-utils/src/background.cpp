@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <darkroom/channel_text.h>
 
 namespace darkroom {
 
@@ -18,7 +19,7 @@ void Background::execute(Context& ctx) {
     const float* depth = in->hostFloat("Z");
     if (!alpha && !depth)
         throw Error("the image has neither alpha A nor depth Z to tell scene from background; it has " +
-                    utils::channelList(*in));
+                    channelListText(*in));
     const bool gradient = ctx.get(mode_) == Mode::Gradient;
     const Color top = gradient ? ctx.get(top_) : ctx.get(color_);
     const Color bottom = gradient ? ctx.get(bottom_) : top;

@@ -1,20 +1,16 @@
 #include "channel_select.h"
+#include <darkroom/strings.h>
 
 #include "image_checks.h"
 
 #include <darkroom/error.h>
 
 #include <algorithm>
+#include <darkroom/channel_text.h>
 
 namespace darkroom {
 
 namespace {
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
 
 struct Pick {
     std::string from, to;
@@ -26,11 +22,11 @@ std::vector<Pick> parsePicks(const std::string& text) {
     std::size_t start = 0;
     while (start <= text.size()) {
         const std::size_t comma = std::min(text.find(',', start), text.size());
-        const std::string item = trim(text.substr(start, comma - start));
+        const std::string item = std::string(trimBlanks(text.substr(start, comma - start)));
         start = comma + 1;
         if (item.empty()) continue;
         const auto colon = item.find(':');
-        Pick p{trim(item.substr(0, colon)), colon == std::string::npos ? "" : trim(item.substr(colon + 1))};
+        Pick p{std::string(trimBlanks(item.substr(0, colon))), colon == std::string::npos ? "" : std::string(trimBlanks(item.substr(colon + 1)))};
         if (colon == std::string::npos) p.to = p.from;
         if (p.from.empty() || p.to.empty())
             throw Error("'" + item + "' in 'channels' is not NAME or SOURCE:NEWNAME");
@@ -49,7 +45,7 @@ void ChannelSelect::execute(Context& ctx) {
 
     for (const Pick& p : picks) {
         if (!in->hasChannel(p.from))
-            throw Error("the image has no channel '" + p.from + "'; it has " + utils::channelList(*in));
+            throw Error("the image has no channel '" + p.from + "'; it has " + channelListText(*in));
         if (!keep && p.to != p.from)
             throw Error("drop mode cannot rename ('" + p.from + ":" + p.to + "'); list plain names");
     }

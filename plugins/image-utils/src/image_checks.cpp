@@ -1,22 +1,16 @@
 #include "image_checks.h"
 
+#include <darkroom/channel_text.h>
 #include <darkroom/error.h>
 
-
 namespace darkroom::utils {
-
-std::string channelList(const Buffer& b) {
-    std::string s;
-    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name;
-    return s.empty() ? std::string("no channels") : s;
-}
 
 std::string sizeText(const Buffer& b) { return std::to_string(b.width()) + "x" + std::to_string(b.height()); }
 
 const float* requireFloatChannel(const Buffer& b, const std::string& name, const std::string& port) {
     if (const float* p = b.hostFloat(name)) return p;
     throw Error("the image on '" + port + "' has no float32 channel '" + name + "'; it has " +
-                channelList(b));
+                channelListText(b));
 }
 
 void requireSameSize(const Buffer& a, const Buffer& b, const std::string& portA, const std::string& portB) {

@@ -6,8 +6,6 @@
 
 namespace darkroom::utils {
 
-// "R, G, B, Z" or "no channels".
-std::string channelList(const Buffer& b);
 // "640x480".
 std::string sizeText(const Buffer& b);
 // The float32 channel `name`, or a darkroom::Error naming the port and the

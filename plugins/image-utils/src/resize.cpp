@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace darkroom {
 
@@ -17,6 +19,45 @@ namespace {
 
 // Rounded, at least 1, and capped so the size check below sees it instead of an int overflow.
 int derived(double size) { return int(std::clamp(std::round(size), 1.0, 1e9)); }
+
+// The output size: width and height as asked, one of them with the other
+// derived from the aspect ratio, or the input scaled.
+std::pair<int, int> outputSize(int w, int h, std::int64_t askW, std::int64_t askH, double scale) {
+    if (askW > 0 && askH > 0) return {int(askW), int(askH)};
+    if (askW > 0) return {int(askW), derived(double(askW) * h / w)};
+    if (askH > 0) return {derived(double(askH) * w / h), int(askH)};
+    return {derived(w * scale), derived(h * scale)};
+}
+
+// One channel to resample: where it comes from and goes to.
+struct ChannelJob {
+    const ChannelDesc* desc;
+    const float* source;
+    const float* weightBy;
+    bool fromSourcePixel;  // Z and uint32 channels: copied from one source pixel
+    void* out;
+};
+
+std::vector<ChannelJob> channelJobs(const Buffer& in, WritableBuffer& out) {
+    const float* alpha = in.hostFloat("A");
+    std::vector<ChannelJob> planes;
+    for (const ChannelDesc& c : in.channels()) {
+        ChannelJob p{&c, nullptr, nullptr, c.type == ChannelType::UInt32 || c.name == "Z", nullptr};
+        if (c.type == ChannelType::UInt32) {
+            p.source = reinterpret_cast<const float*>(in.hostUInt(c.name));
+            p.out = out.writeUInt(c.name);
+        } else {
+            p.source = in.hostFloat(c.name);
+            p.out = out.writeFloat(c.name);
+            // Straight-alpha colour is averaged weighted by alpha (what a
+            // premultiplied average divided by the mean alpha gives), so edges
+            // against transparent background do not darken.
+            if (alpha && (c.name == "R" || c.name == "G" || c.name == "B")) p.weightBy = alpha;
+        }
+        planes.push_back(p);
+    }
+    return planes;
+}
 
 }  // namespace
 
@@ -79,22 +120,7 @@ void Resize::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const int w = in->width(), h = in->height();
     if (w <= 0 || h <= 0) throw Error("the input image is empty (" + utils::sizeText(*in) + ")");
-    const std::int64_t askW = ctx.get(width_), askH = ctx.get(height_);
-    const double scale = ctx.get(scale_);
-    int outW, outH;
-    if (askW > 0 && askH > 0) {
-        outW = int(askW);
-        outH = int(askH);
-    } else if (askW > 0) {
-        outW = int(askW);
-        outH = derived(double(askW) * h / w);
-    } else if (askH > 0) {
-        outH = int(askH);
-        outW = derived(double(askH) * w / h);
-    } else {
-        outW = derived(w * scale);
-        outH = derived(h * scale);
-    }
+    const auto [outW, outH] = outputSize(w, h, ctx.get(width_), ctx.get(height_), ctx.get(scale_));
     if (outW > kMaxSide || outH > kMaxSide || std::int64_t(outW) * outH > kMaxPixels)
         throw Error("output " + std::to_string(outW) + "x" + std::to_string(outH) + " exceeds " +
                     std::to_string(kMaxSide) + " pixels per side or " + std::to_string(kMaxPixels) +
@@ -110,7 +136,6 @@ void Resize::execute(Context& ctx) {
     const utils::ResampleFilter filter = ctx.get(filter_);
     const utils::AxisTaps tx = utils::axisTaps(w, outW, filter), ty = utils::axisTaps(h, outH, filter);
     const float* depth = in->hostFloat("Z");
-    const float* alpha = in->hostFloat("A");
 
     // Every channel is resampled into every output pixel.
     auto out = ctx.allocate(outW, outH, in->channels(), Fill::None);
@@ -126,29 +151,7 @@ void Resize::execute(Context& ctx) {
     const bool nearestDepth = depth && filter == utils::ResampleFilter::Box;
     const bool simd = std::int64_t(w) * h < (std::int64_t(1) << 31);
     const utils::PaddedTaps px = simd ? utils::padTaps(tx, outW) : utils::PaddedTaps{};
-    struct ChannelJob {
-        const ChannelDesc* desc;
-        const float* source;
-        const float* weightBy;
-        bool fromSourcePixel;  // Z and uint32 channels: copied from one source pixel
-        void* out;
-    };
-    std::vector<ChannelJob> planes;
-    for (const ChannelDesc& c : in->channels()) {
-        ChannelJob p{&c, nullptr, nullptr, c.type == ChannelType::UInt32 || c.name == "Z", nullptr};
-        if (c.type == ChannelType::UInt32) {
-            p.source = reinterpret_cast<const float*>(in->hostUInt(c.name));
-            p.out = out->writeUInt(c.name);
-        } else {
-            p.source = in->hostFloat(c.name);
-            p.out = out->writeFloat(c.name);
-            // Straight-alpha colour is averaged weighted by alpha (what a
-            // premultiplied average divided by the mean alpha gives), so edges
-            // against transparent background do not darken.
-            if (alpha && (c.name == "R" || c.name == "G" || c.name == "B")) p.weightBy = alpha;
-        }
-        planes.push_back(p);
-    }
+    const std::vector<ChannelJob> planes = channelJobs(*in, *out);
     ctx.parallelFor(0, outH, 8, [&](int y0, int y1) {
         std::vector<std::int32_t> fallback(static_cast<std::size_t>(outW)), source(static_cast<std::size_t>(outW));
         for (int y = y0; y < y1; ++y) {

@@ -2,6 +2,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/view_geometry.h>
+#include <darkroom/channel_text.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,11 +45,7 @@ void Lighting::execute(Context& ctx) {
     const bool haveCaptured = world[0] && world[1] && world[2];
     if (which == Normals::Captured && !haveCaptured)
         throw Error(std::string("normals: captured needs N.x, N.y and N.z in input '") +
-                    (geometry ? "geometry" : "image") + "'; it has " + [&] {
-                        std::string s;
-                        for (const auto& c : source.channels()) s += (s.empty() ? "" : ", ") + c.name;
-                        return s;
-                    }());
+                    (geometry ? "geometry" : "image") + "'; it has " + channelListText(source));
     std::vector<float> nv[3] = {std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
     float* view[3] = {nv[0].data(), nv[1].data(), nv[2].data()};
     if (haveCaptured && which != Normals::Reconstructed) {

@@ -8,6 +8,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <numbers>
 
 using namespace darkroom;
 using namespace darkroom::test;
@@ -15,7 +16,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-const double kPi = 3.14159265358979323846;
+const double kPi = std::numbers::pi;
 
 // A plane seen by `cam`, albedo (0.8, 0.5, 0.2), optionally with its captured
 // world normal in N.x/N.y/N.z.

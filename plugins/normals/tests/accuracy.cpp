@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace darkroom::test {
 
@@ -46,7 +47,7 @@ NormalAccuracy compareNormals(const Buffer& truth, const Buffer& rec, double jum
                 }
             const Vec3 a = normalAt(truth, i), b = normalAt(rec, i);
             const double c = std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0);
-            (edge ? edges : interior).push_back(std::acos(c) * 180.0 / 3.14159265358979323846);
+            (edge ? edges : interior).push_back(std::acos(c) * 180.0 / std::numbers::pi);
         }
     return {summarise(edges), summarise(interior)};
 }

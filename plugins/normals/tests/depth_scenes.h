@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -68,7 +69,7 @@ inline Vec3 facing(const Camera& c, const ScenePlane& p) {
 
 inline double angleDegrees(const Vec3& a, const Vec3& b) {
     const double c = dot(normalize(a), normalize(b));
-    return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi;
 }
 
 using Inputs = std::map<std::string, std::vector<Value>>;

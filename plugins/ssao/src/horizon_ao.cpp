@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 HWY_BEFORE_NAMESPACE();
@@ -103,9 +104,17 @@ HWY_INLINE VF Horizon(DF d, const March& m) {
     return hn::Min(hn::Max(best, hn::Set(d, -1.0f)), hn::Set(d, 1.0f));
 }
 
-// One sample of march m at `dist` pixels from the receiver.
-template <bool kPersp, bool kPoints, bool kFalloff>
-HWY_INLINE void Step(DF d, const Lattice& L, const Receiver& r, V3 axis, VF dist, March& m) {
+// Where sample `dist` of march m lands: its 1/z (perspective) or z, its
+// image-plane position (at unit depth in perspective), whether it can
+// occlude, and which lanes took the nearest pixel instead of interpolating.
+struct Sample {
+    VF fq, qx, qy;
+    MF hit, nearest;
+    bool anyNearest;
+};
+
+template <bool kPersp, bool kPoints>
+HWY_INLINE Sample SampleAt(DF d, const Lattice& L, const Receiver& r, VF dist, const March& m) {
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const VF maxX0 = hn::Set(d, L.maxX0), maxY0 = hn::Set(d, L.maxY0), edge = hn::Set(d, L.edge);
     const VF ax = hn::Set(d, L.ax), ay = hn::Set(d, L.ay), halfAx = hn::Set(d, L.halfAx), halfAy = hn::Set(d, L.halfAy);
@@ -113,100 +122,106 @@ HWY_INLINE void Step(DF d, const Lattice& L, const Receiver& r, V3 axis, VF dist
     const float* f = L.f;
     const std::size_t below = std::size_t(L.stride);
     const MF live = m.live;
+    // The sample in pixel coordinates minus half a pixel.
+    const VF fx = hn::MulAdd(m.dirX, dist, r.fx), fy = hn::MulAdd(m.dirY, dist, r.fy);
+
+    // Depth interpolated in 1/z (perspective) or z between the four
+    // surrounding pixel centres, exact on a plane; the nearest pixel where
+    // they straddle an edge (spread beyond 4 pixel sizes) or one is empty.
+    // fq: the sample's 1/z (perspective) or z; (qx, qy) its image-plane
+    // position (at unit depth in perspective).
+    VF fq = zero;
+    VF qx = hn::MulAdd(fx, ax, halfAx), qy = hn::MulAdd(fy, ay, halfAy);
+    MF interp = hn::FirstN(d, 0);
+    if (L.canInterp) {
+        // Clamped, so the outer half pixel at the borders is extrapolated
+        // from the two outermost rows/columns (still exact for a plane);
+        // the clamp also keeps every lane's reads inside the plane.
+        const VF x0 = hn::Min(hn::Max(hn::Floor(fx), zero), maxX0);
+        const VF y0 = hn::Min(hn::Max(hn::Floor(fy), zero), maxY0);
+        const VF tx = hn::Sub(fx, x0), ty = hn::Sub(fy, y0);
+        const VI idx = L.Index(d, x0, y0);
+        const VF f00 = hn::GatherIndex(d, f, idx), f10 = hn::GatherIndex(d, f + 1, idx);
+        const VF f01 = hn::GatherIndex(d, f + below, idx), f11 = hn::GatherIndex(d, f + below + 1, idx);
+        const VF lo = hn::Min(hn::Min(f00, f10), hn::Min(f01, f11));
+        const VF hi = hn::Max(hn::Max(f00, f10), hn::Max(f01, f11));
+        // Perspective: z spread <= 4 pixel sizes at the nearest z, i.e.
+        // (1/z) spread <= 4 * pixelScale * min(1/z). An empty corner
+        // (-inf) fails either test.
+        interp = hn::Le(hn::Sub(hi, lo), kPersp ? hn::Mul(edge, lo) : edge);
+        const VF top = hn::MulAdd(hn::Sub(f10, f00), tx, f00);
+        const VF bottom = hn::MulAdd(hn::Sub(f11, f01), tx, f01);
+        fq = hn::MulAdd(hn::Sub(bottom, top), ty, top);
+    }
+    MF hit = live;
+    const MF nearest = hn::AndNot(interp, live);
+    const bool anyNearest = !hn::AllFalse(d, nearest);
+    if (anyNearest) {
+        // fx + 0.5 >= 0 for marching lanes; the others read pixel 0.
+        const VF nx = hn::Floor(hn::Add(fx, half)), ny = hn::Floor(hn::Add(fy, half));
+        const VI idx = hn::IfThenElseZero(hn::RebindMask(DI(), nearest), L.Index(d, nx, ny));
+        const VF zn = hn::GatherIndex(d, L.z, idx);
+        fq = hn::IfThenElse(nearest, kPersp ? hn::Div(one, zn) : zn, fq);
+        qx = hn::IfThenElse(nearest, hn::MulAdd(nx, ax, halfAx), qx);
+        qy = hn::IfThenElse(nearest, hn::MulAdd(ny, ay, halfAy), qy);
+        // Background never occludes.
+        hit = hn::AndNot(hn::AndNot(hn::Lt(zn, inf), nearest), hit);
+    }
+    if (kPoints)
+        hit = kPersp ? hn::And(hit, hn::And(hn::Gt(fq, r.pointsMinF), hn::Le(fq, r.pointsMaxF)))
+                     : hn::And(hit, hn::And(hn::Lt(fq, r.p.z), hn::Le(hn::Sub(r.p.z, fq), r.thick)));
+    return {fq, qx, qy, hit, nearest, anyNearest};
+}
+
+// One sample of march m at `dist` pixels from the receiver.
+template <bool kPersp, bool kPoints, bool kFalloff>
+HWY_INLINE void Step(DF d, const Lattice& L, const Receiver& r, V3 axis, VF dist, March& m) {
+    const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     const VF lowCos = m.lowCos;
     VF num = m.num, den = m.den;
-    {
-        // The sample in pixel coordinates minus half a pixel.
-        const VF fx = hn::MulAdd(m.dirX, dist, r.fx), fy = hn::MulAdd(m.dirY, dist, r.fy);
-
-        // Depth interpolated in 1/z (perspective) or z between the four
-        // surrounding pixel centres, exact on a plane; the nearest pixel where
-        // they straddle an edge (spread beyond 4 pixel sizes) or one is empty.
-        // fq: the sample's 1/z (perspective) or z; (qx, qy) its image-plane
-        // position (at unit depth in perspective).
-        VF fq = zero;
-        VF qx = hn::MulAdd(fx, ax, halfAx), qy = hn::MulAdd(fy, ay, halfAy);
-        MF interp = hn::FirstN(d, 0);
-        if (L.canInterp) {
-            // Clamped, so the outer half pixel at the borders is extrapolated
-            // from the two outermost rows/columns (still exact for a plane);
-            // the clamp also keeps every lane's reads inside the plane.
-            const VF x0 = hn::Min(hn::Max(hn::Floor(fx), zero), maxX0);
-            const VF y0 = hn::Min(hn::Max(hn::Floor(fy), zero), maxY0);
-            const VF tx = hn::Sub(fx, x0), ty = hn::Sub(fy, y0);
-            const VI idx = L.Index(d, x0, y0);
-            const VF f00 = hn::GatherIndex(d, f, idx), f10 = hn::GatherIndex(d, f + 1, idx);
-            const VF f01 = hn::GatherIndex(d, f + below, idx), f11 = hn::GatherIndex(d, f + below + 1, idx);
-            const VF lo = hn::Min(hn::Min(f00, f10), hn::Min(f01, f11));
-            const VF hi = hn::Max(hn::Max(f00, f10), hn::Max(f01, f11));
-            // Perspective: z spread <= 4 pixel sizes at the nearest z, i.e.
-            // (1/z) spread <= 4 * pixelScale * min(1/z). An empty corner
-            // (-inf) fails either test.
-            interp = hn::Le(hn::Sub(hi, lo), kPersp ? hn::Mul(edge, lo) : edge);
-            const VF top = hn::MulAdd(hn::Sub(f10, f00), tx, f00);
-            const VF bottom = hn::MulAdd(hn::Sub(f11, f01), tx, f01);
-            fq = hn::MulAdd(hn::Sub(bottom, top), ty, top);
-        }
-        MF hit = live;
-        const MF nearest = hn::AndNot(interp, live);
-        const bool anyNearest = !hn::AllFalse(d, nearest);
-        if (anyNearest) {
-            // fx + 0.5 >= 0 for marching lanes; the others read pixel 0.
-            const VF nx = hn::Floor(hn::Add(fx, half)), ny = hn::Floor(hn::Add(fy, half));
-            const VI idx = hn::IfThenElseZero(hn::RebindMask(DI(), nearest), L.Index(d, nx, ny));
-            const VF zn = hn::GatherIndex(d, L.z, idx);
-            fq = hn::IfThenElse(nearest, kPersp ? hn::Div(one, zn) : zn, fq);
-            qx = hn::IfThenElse(nearest, hn::MulAdd(nx, ax, halfAx), qx);
-            qy = hn::IfThenElse(nearest, hn::MulAdd(ny, ay, halfAy), qy);
-            // Background never occludes.
-            hit = hn::AndNot(hn::AndNot(hn::Lt(zn, inf), nearest), hit);
-        }
-        if (kPoints)
-            hit = kPersp ? hn::And(hit, hn::And(hn::Gt(fq, r.pointsMinF), hn::Le(fq, r.pointsMaxF)))
-                         : hn::And(hit, hn::And(hn::Lt(fq, r.p.z), hn::Le(hn::Sub(r.p.z, fq), r.thick)));
-        // The sample minus the origin; in perspective scaled by the sample's
-        // 1/z, which leaves the horizon cosine unchanged and saves a division:
-        // (1/z) (q - o) = (qx - o.x / z, qy - o.y / z, 1 - o.z / z).
-        V3 dd = kPersp ? V3{hn::NegMulAdd(r.origin.x, fq, qx), hn::NegMulAdd(r.origin.y, fq, qy),
-                            hn::NegMulAdd(r.origin.z, fq, one)}
-                       : V3{hn::Sub(qx, r.origin.x), hn::Sub(qy, r.origin.y), hn::Sub(fq, r.origin.z)};
-        // Nearest-pixel samples need not lie in the slice: measured within
-        // it. Interpolated ones lie on the slice's screen line, so in it.
-        if (anyNearest) dd = Select(nearest, SubScaled(dd, axis, Dot(dd, axis)), dd);
-        const VF len2 = Dot(dd, dd);
-        const VF dotV = Dot(dd, r.v);
-        // Radii in dd's units: R (orthographic) or R / z (perspective).
-        const VF coreR = kPersp ? hn::Mul(r.coreR, fq) : r.coreR;
-        // Full weight within the core (for a hard cut the radius, inclusive).
-        // A zero-length |d| compares 0 > 0 and never wins.
-        const MF full = hn::And(hit, kFalloff ? hn::Lt(len2, hn::Mul(coreR, coreR)) : hn::Le(len2, hn::Mul(coreR, coreR)));
-        const VF candNum = hn::Mul(dotV, hn::Abs(dotV));
-        const MF better = hn::And(full, hn::Gt(hn::Mul(candNum, den), hn::Mul(num, len2)));
-        num = hn::IfThenElse(better, candNum, num);
-        den = hn::IfThenElse(better, len2, den);
-        if (kFalloff) {
-            const VF radius = kPersp ? hn::Mul(r.R, fq) : r.R;
-            const MF band = hn::AndNot(full, hn::And(hit, hn::Lt(len2, hn::Mul(radius, radius))));
-            if (!hn::AllFalse(d, band)) {
-                // Weight clamp((R - |q - o|) / (falloff R)), with |q - o| =
-                // len z in perspective: 1/len and z both from 1/(len / z).
-                const VF len = hn::Sqrt(len2);
-                VF cosH, distance;
-                if (kPersp) {
-                    const VF inv = hn::Div(one, hn::Mul(len, fq));
-                    cosH = hn::Mul(hn::Mul(dotV, fq), inv);
-                    distance = hn::Mul(len2, inv);
-                } else {
-                    cosH = hn::Div(dotV, len);
-                    distance = len;
-                }
-                const VF w = hn::Min(hn::Max(hn::Mul(hn::Sub(r.R, distance), r.invFalloffR), zero), one);
-                const VF c = hn::MulAdd(hn::Sub(cosH, lowCos), w, lowCos);
-                const VF cNum = hn::Mul(c, hn::Abs(c));
-                const MF wins = hn::And(band, hn::Gt(hn::Mul(cNum, den), num));
-                num = hn::IfThenElse(wins, cNum, num);
-                den = hn::IfThenElse(wins, one, den);
+    const auto [fq, qx, qy, hit, nearest, anyNearest] = SampleAt<kPersp, kPoints>(d, L, r, dist, m);
+    // The sample minus the origin; in perspective scaled by the sample's
+    // 1/z, which leaves the horizon cosine unchanged and saves a division:
+    // (1/z) (q - o) = (qx - o.x / z, qy - o.y / z, 1 - o.z / z).
+    V3 dd = kPersp ? V3{hn::NegMulAdd(r.origin.x, fq, qx), hn::NegMulAdd(r.origin.y, fq, qy),
+                        hn::NegMulAdd(r.origin.z, fq, one)}
+                   : V3{hn::Sub(qx, r.origin.x), hn::Sub(qy, r.origin.y), hn::Sub(fq, r.origin.z)};
+    // Nearest-pixel samples need not lie in the slice: measured within
+    // it. Interpolated ones lie on the slice's screen line, so in it.
+    if (anyNearest) dd = Select(nearest, SubScaled(dd, axis, Dot(dd, axis)), dd);
+    const VF len2 = Dot(dd, dd);
+    const VF dotV = Dot(dd, r.v);
+    // Radii in dd's units: R (orthographic) or R / z (perspective).
+    const VF coreR = kPersp ? hn::Mul(r.coreR, fq) : r.coreR;
+    // Full weight within the core (for a hard cut the radius, inclusive).
+    // A zero-length |d| compares 0 > 0 and never wins.
+    const MF full = hn::And(hit, kFalloff ? hn::Lt(len2, hn::Mul(coreR, coreR)) : hn::Le(len2, hn::Mul(coreR, coreR)));
+    const VF candNum = hn::Mul(dotV, hn::Abs(dotV));
+    const MF better = hn::And(full, hn::Gt(hn::Mul(candNum, den), hn::Mul(num, len2)));
+    num = hn::IfThenElse(better, candNum, num);
+    den = hn::IfThenElse(better, len2, den);
+    if (kFalloff) {
+        const VF radius = kPersp ? hn::Mul(r.R, fq) : r.R;
+        const MF band = hn::AndNot(full, hn::And(hit, hn::Lt(len2, hn::Mul(radius, radius))));
+        if (!hn::AllFalse(d, band)) {
+            // Weight clamp((R - |q - o|) / (falloff R)), with |q - o| =
+            // len z in perspective: 1/len and z both from 1/(len / z).
+            const VF len = hn::Sqrt(len2);
+            VF cosH, distance;
+            if (kPersp) {
+                const VF inv = hn::Div(one, hn::Mul(len, fq));
+                cosH = hn::Mul(hn::Mul(dotV, fq), inv);
+                distance = hn::Mul(len2, inv);
+            } else {
+                cosH = hn::Div(dotV, len);
+                distance = len;
             }
+            const VF w = hn::Min(hn::Max(hn::Mul(hn::Sub(r.R, distance), r.invFalloffR), zero), one);
+            const VF c = hn::MulAdd(hn::Sub(cosH, lowCos), w, lowCos);
+            const VF cNum = hn::Mul(c, hn::Abs(c));
+            const MF wins = hn::And(band, hn::Gt(hn::Mul(cNum, den), num));
+            num = hn::IfThenElse(wins, cNum, num);
+            den = hn::IfThenElse(wins, one, den);
         }
     }
     m.num = num;
@@ -243,24 +258,56 @@ struct HorizonConstants {
           rowHash(mix32(std::uint32_t(row) + 0x632be5abU)), stream0(mix32(s.seed * 0x85ebca6bU + 0)),
           stream1(mix32(s.seed * 0x85ebca6bU + 1)), rotCos(std::size_t(s.slices)), rotSin(std::size_t(s.slices)) {
         for (int k = 0; k < s.slices; ++k) {
-            rotCos[std::size_t(k)] = float(std::cos(double(k) * M_PI / s.slices));
-            rotSin[std::size_t(k)] = float(std::sin(double(k) * M_PI / s.slices));
+            rotCos[std::size_t(k)] = float(std::cos(double(k) * std::numbers::pi / s.slices));
+            rotSin[std::size_t(k)] = float(std::sin(double(k) * std::numbers::pi / s.slices));
         }
     }
 };
+
+// The visibility integral of one slice, from its horizons' cosines (c2 on
+// the + side, c1 on the - side) and the normal's angle g in the slice
+// (cos g, sin g).
+HWY_INLINE VF SliceIntegral(DF d, VF c1, VF c2, VF cosG, VF sinG) {
+    const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    const VF quarter = hn::Set(d, 0.25f), two = hn::Set(d, 2.0f);
+    // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
+    // within pi/2 of g because the march starts at the hemisphere edge.
+    // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
+    const VF h2 = hn::Acos(d, c2), h1 = hn::Neg(hn::Acos(d, c1));
+    const VF s2 = hn::Sqrt(hn::Max(hn::NegMulAdd(c2, c2, one), zero));
+    const VF s1 = hn::Neg(hn::Sqrt(hn::Max(hn::NegMulAdd(c1, c1, one), zero)));
+    const VF cos2h2 = hn::MulSub(two, hn::Mul(c2, c2), one), sin2h2 = hn::Mul(two, hn::Mul(s2, c2));
+    const VF cos2h1 = hn::MulSub(two, hn::Mul(c1, c1), one), sin2h1 = hn::Mul(two, hn::Mul(s1, c1));
+    const VF cosTerms = hn::Sub(two, hn::Add(cos2h2, cos2h1));
+    const VF sinTerms = hn::Sub(hn::Mul(two, hn::Add(h2, h1)), hn::Add(sin2h2, sin2h1));
+    const VF sum = hn::Mul(quarter, hn::MulAdd(sinTerms, sinG, hn::Mul(cosTerms, cosG)));
+    return sum;
+}
+
+// Where a slice's screen line through (cx, cy) leaves the image, in
+// pixels: the + side moves along (c, -sn), the - side along (-c, sn). A
+// zero component gives an infinite reciprocal, signed as the zero was.
+HWY_INLINE void SideExits(DF d, VF c, VF sn, VF cx, VF cy, VF toRight, VF toBottom, VF& exitPlus, VF& exitMinus) {
+    const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    const VF invC = hn::Div(one, c), invS = hn::Div(one, sn);
+    const VF a = hn::Mul(toRight, invC), b = hn::Mul(cx, invC);
+    const VF cc = hn::Mul(toBottom, invS), dy = hn::Mul(cy, invS);
+    const MF posC = hn::Gt(invC, zero), posS = hn::Gt(invS, zero);
+    exitPlus = hn::Min(hn::IfThenElse(posC, a, hn::Neg(b)), hn::IfThenElse(posS, dy, hn::Neg(cc)));
+    exitMinus = hn::Min(hn::IfThenElse(posC, b, hn::Neg(a)), hn::IfThenElse(posS, cc, hn::Neg(dy)));
+}
 
 // AO of the pixels (x, T.y) given by the lanes: centre cx = x + 0.5, x as
 // an unsigned (for the noise), depth zc (+inf: none) and normal nrm.
 template <bool kPersp, bool kPoints, bool kFalloff>
 HWY_INLINE VF HorizonVector(DF d, const Frame& g, const AoSettings& s, const HorizonConstants& T, VF cx, VU xu, VF zc,
                             V3 nrm) {
-    constexpr float kPi = 3.14159265358979323846f;
+    constexpr float kPi = std::numbers::pi_v<float>;
     const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
     const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
     const VF W = hn::Set(d, float(g.width())), H = hn::Set(d, float(g.height()));
     const VF cy = T.cy, sy = T.sy;
     const VF invSlices = hn::Set(d, 1.0f / float(s.slices));
-    const VF quarter = hn::Set(d, 0.25f), two = hn::Set(d, 2.0f);
     const MF valid = hn::Lt(zc, inf);
     if (hn::AllFalse(d, valid)) return one;
     Receiver r;
@@ -329,15 +376,8 @@ HWY_INLINE VF HorizonVector(DF d, const Frame& g, const AoSettings& s, const Hor
         const VF projLen = hn::Sqrt(Dot(projN, projN));
         ok = hn::And(ok, hn::Gt(projLen, hn::Set(d, 1e-6f)));
         if (hn::AllFalse(d, ok)) continue;
-        // Where each side's screen line leaves the image: the + side moves
-        // along (c, -sn), the - side along (-c, sn). A zero component
-        // gives an infinite reciprocal, signed as the zero was.
-        const VF invC = hn::Div(one, c), invS = hn::Div(one, sn);
-        const VF a = hn::Mul(toRight, invC), b = hn::Mul(cx, invC);
-        const VF cc = hn::Mul(toBottom, invS), dy = hn::Mul(cy, invS);
-        const MF posC = hn::Gt(invC, zero), posS = hn::Gt(invS, zero);
-        const VF exitPlus = hn::Min(hn::IfThenElse(posC, a, hn::Neg(b)), hn::IfThenElse(posS, dy, hn::Neg(cc)));
-        const VF exitMinus = hn::Min(hn::IfThenElse(posC, b, hn::Neg(a)), hn::IfThenElse(posS, cc, hn::Neg(dy)));
+        VF exitPlus, exitMinus;
+        SideExits(d, c, sn, cx, cy, toRight, toBottom, exitPlus, exitMinus);
         // The normal's signed angle g in the slice, through its cosine and
         // sine (|g| <= pi/2: the normal faces the camera).
         const VF invP = hn::Div(one, projLen);
@@ -349,17 +389,7 @@ HWY_INLINE VF HorizonVector(DF d, const Frame& g, const AoSettings& s, const Hor
         March minus = StartMarch(d, ok, hn::Neg(c), sn, exitMinus, sinG);
         MarchSlice<kPersp, kPoints, kFalloff>(d, T.lattice, s.steps, r, axis, plus, minus);
         const VF c2 = Horizon(d, plus), c1 = Horizon(d, minus);
-        // h2 = acos(c2) in [0, pi], h1 = -acos(c1) in [-pi, 0]; both lie
-        // within pi/2 of g because the march starts at the hemisphere edge.
-        // a(h) with cos(2h - g) = cos 2h cos g + sin 2h sin g.
-        const VF h2 = hn::Acos(d, c2), h1 = hn::Neg(hn::Acos(d, c1));
-        const VF s2 = hn::Sqrt(hn::Max(hn::NegMulAdd(c2, c2, one), zero));
-        const VF s1 = hn::Neg(hn::Sqrt(hn::Max(hn::NegMulAdd(c1, c1, one), zero)));
-        const VF cos2h2 = hn::MulSub(two, hn::Mul(c2, c2), one), sin2h2 = hn::Mul(two, hn::Mul(s2, c2));
-        const VF cos2h1 = hn::MulSub(two, hn::Mul(c1, c1), one), sin2h1 = hn::Mul(two, hn::Mul(s1, c1));
-        const VF cosTerms = hn::Sub(two, hn::Add(cos2h2, cos2h1));
-        const VF sinTerms = hn::Sub(hn::Mul(two, hn::Add(h2, h1)), hn::Add(sin2h2, sin2h1));
-        const VF sum = hn::Mul(quarter, hn::MulAdd(sinTerms, sinG, hn::Mul(cosTerms, cosG)));
+        const VF sum = SliceIntegral(d, c1, c2, cosG, sinG);
         visibility = hn::Add(visibility, hn::IfThenElseZero(ok, hn::Mul(projLen, sum)));
     }
     const VF result = hn::Min(hn::Max(hn::Mul(visibility, invSlices), zero), one);

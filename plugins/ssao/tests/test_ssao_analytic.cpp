@@ -9,13 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 using namespace darkroom;
 using namespace ssao_test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 using Inputs = std::map<std::string, std::vector<Value>>;
 
 BufferPtr runSsao(const BufferPtr& image, Inputs params, int threads = 2) {

@@ -13,6 +13,7 @@
 #include <darkroom/context.h>
 
 #include <cmath>
+#include <numbers>
 
 HWY_BEFORE_NAMESPACE();
 namespace darkroom::ssdof {
@@ -99,7 +100,7 @@ namespace {
 // Vogel's spiral: point i at radius sqrt((i + 0.5) / n) and angle i * golden
 // angle covers the disc with equal area per point, so each represents pi r^2 / n.
 std::vector<SpiralPoint> vogelSpiral(int n) {
-    const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
     std::vector<SpiralPoint> s(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
         const double r = std::sqrt((i + 0.5) / n), a = i * golden;

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #ifndef DARKROOM_SSDOF_HEXAGON_ONCE
@@ -198,7 +199,7 @@ std::vector<std::array<int, 2>> steps(double angle, int count) {
 }  // namespace
 
 void gatherHexagon(const WorkImage& w, double rotationDegrees, Context& ctx, const Output& out) {
-    const double pi = 3.14159265358979323846;
+    const double pi = std::numbers::pi;
     // Every tap is within pad - 1 pixels (buildWorkImage): t runs to round(|CoC|) <= pad - 2.
     const int maxSteps = w.pad - 1;
     HexagonSteps hex;

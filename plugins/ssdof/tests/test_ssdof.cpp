@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -140,8 +141,8 @@ TEST(SSDoF, HexagonBlursAPointIntoAHexagonWithCornersUp) {
         const Spread s = spread(*dof(dot(64, z), lens(A, 2.0, "hexagon")), 32, 32);
         // Corner to corner vertically, flat to flat horizontally.
         EXPECT_NEAR(s.halfHeight, r, 1.0) << z;
-        EXPECT_NEAR(s.halfWidth, r * std::cos(3.14159265358979 / 6), 1.0) << z;
-        EXPECT_NEAR(s.halfWidth / s.halfHeight, std::cos(3.14159265358979 / 6), 0.06) << z;
+        EXPECT_NEAR(s.halfWidth, r * std::cos(std::numbers::pi / 6), 1.0) << z;
+        EXPECT_NEAR(s.halfWidth / s.halfHeight, std::cos(std::numbers::pi / 6), 0.06) << z;
         EXPECT_NEAR(s.energy, 1.0, 0.03) << z;
     }
 }
@@ -151,7 +152,7 @@ TEST(SSDoF, HexagonRotatedByThirtyDegreesHasCornersSideways) {
     p["rotation"] = {Value(30.0)};
     const Spread s = spread(*dof(dot(64, 8.0f), p), 32, 32);
     EXPECT_NEAR(s.halfWidth, 12.0, 1.0);
-    EXPECT_NEAR(s.halfHeight, 12.0 * std::cos(3.14159265358979 / 6), 1.0);
+    EXPECT_NEAR(s.halfHeight, 12.0 * std::cos(std::numbers::pi / 6), 1.0);
 }
 
 namespace {

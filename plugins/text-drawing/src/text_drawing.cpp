@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <numbers>
 
 namespace darkroom::text {
 
@@ -139,7 +140,7 @@ void Mask::rectangle(double x, double y, double w, double h, double radius) {
     if (r <= 0) {
         cairo_rectangle(cr, x, y, w, h);
     } else {
-        const double pi = 3.14159265358979323846;
+        const double pi = std::numbers::pi;
         cairo_new_sub_path(cr);
         cairo_arc(cr, x + w - r, y + r, r, -pi / 2, 0);
         cairo_arc(cr, x + w - r, y + h - r, r, 0, pi / 2);

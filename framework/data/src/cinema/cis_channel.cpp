@@ -5,6 +5,7 @@
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/product.h>
 #include <darkroom/data/formats/npy.h>
+#include <darkroom/strings.h>
 
 #include <fmt/format.h>
 
@@ -19,12 +20,6 @@ namespace {
 std::string upper(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
     return s;
-}
-
-std::string trimmed(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
 bool isNpz(const std::string& path) {
@@ -81,7 +76,7 @@ void checkType(const NpyArray& a, const std::string& where, const CinemaDatabase
     const char kind = a.descr.size() > 1 ? a.descr[1] : '?';
     const bool isFloat = kind == 'f', isInteger = kind == 'i' || kind == 'u' || kind == 'b';
     const auto c = db.findColumn("CISChannelVarType");
-    const std::string stated = c ? trimmed(db.cell(ch.row, *c)) : std::string();
+    const std::string stated = c ? std::string(trimBlanks(db.cell(ch.row, *c))) : std::string();
     if (stated.empty()) {
         if (!isFloat && warnings)
             warnings->push_back({Diagnostic::Severity::Warning, where,
@@ -110,7 +105,7 @@ void checkType(const NpyArray& a, const std::string& where, const CinemaDatabase
 std::string parseOrigin(const CinemaDatabase& db, std::size_t row) {
     const auto c = db.findColumn("CISOrigin");
     if (!c) return "UL";
-    const std::string v = upper(trimmed(db.cell(row, *c)));
+    const std::string v = upper(std::string(trimBlanks(db.cell(row, *c))));
     if (v.empty()) return "UL";
     if (v == "UL" || v == "UR" || v == "LL" || v == "LR") return v;
     throw Error(fmt::format("{}:{}: CISOrigin is '{}'; expected UL, UR, LL or LR (the corner of pixel (0, 0))",

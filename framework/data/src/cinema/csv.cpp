@@ -2,6 +2,7 @@
 // file with a thousand short rows yields one warning, not a thousand.
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/csv.h>
+#include <darkroom/strings.h>
 #include <darkroom/input_file.h>
 
 #include <fmt/format.h>
@@ -13,12 +14,6 @@
 namespace darkroom {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
 
 enum class Irregularity {
     ShortRow,
@@ -109,7 +104,7 @@ std::vector<std::string> splitLine(std::string_view line, int lineNo, Irregulari
                         fmt::format("cell {}", cells.size() + 1));
             const std::size_t end = line.find(',', i);
             const std::string_view rest =
-                trim(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i));
+                trimBlanks(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i));
             if (!rest.empty()) {
                 log.add(Irregularity::TextAfterQuote, lineNo,
                         fmt::format("cell {}: '{}'", cells.size() + 1, rest));
@@ -121,7 +116,7 @@ std::vector<std::string> splitLine(std::string_view line, int lineNo, Irregulari
         } else {
             const std::size_t end = line.find(',', i);
             cells.emplace_back(
-                trim(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i)));
+                trimBlanks(line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i)));
             if (end == std::string_view::npos) break;
             i = end + 1;
         }
@@ -163,7 +158,7 @@ CsvTable parseCsv(std::string_view text, const std::string& source, const CsvRea
         pos = end + 1;
         if (end < text.size() && text[end] == '\r' && pos < text.size() && text[pos] == '\n') ++pos;  // CRLF
         ++lineNo;
-        if (trim(line).empty()) continue;  // blank lines (often the last) carry nothing
+        if (trimBlanks(line).empty()) continue;  // blank lines (often the last) carry nothing
 
         std::vector<std::string> cells = splitLine(line, lineNo, log);
         if (!haveHeader) {

@@ -1,6 +1,7 @@
 // Opening a Cinema database and looking entries up by parameter values.
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/database.h>
+#include <darkroom/strings.h>
 #include <darkroom/data/cinema/naming.h>
 
 #include <fmt/format.h>
@@ -20,12 +21,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
 
 // At most `limit` items, then how many there are in all: error messages must
 // stay readable for a column with 10,000 distinct time steps.
@@ -212,16 +207,16 @@ std::vector<CinemaConstraint> CinemaDatabase::parseQuery(std::string_view query)
         ++i;
         if (quoted)
             throw Error(fmt::format("query '{}': unterminated quote; expected name=\"value\"", query));
-        const std::string_view t = trim(item);
+        const std::string_view t = trimBlanks(item);
         if (t.empty()) continue;
         const std::size_t eq = t.find('=');
-        if (eq == std::string_view::npos || trim(t.substr(0, eq)).empty())
+        if (eq == std::string_view::npos || trimBlanks(t.substr(0, eq)).empty())
             throw Error(fmt::format("query '{}': '{}' is not of the form name=value (e.g. "
                                     "'phi=30, theta=45')",
                                     query, t));
         CinemaConstraint k;
-        k.column = std::string(trim(t.substr(0, eq)));
-        std::string_view v = trim(t.substr(eq + 1));
+        k.column = std::string(trimBlanks(t.substr(0, eq)));
+        std::string_view v = trimBlanks(t.substr(eq + 1));
         if (v.size() >= 2 && v.front() == '"' && v.back() == '"') {
             v = v.substr(1, v.size() - 2);
             for (std::size_t j = 0; j < v.size(); ++j) {

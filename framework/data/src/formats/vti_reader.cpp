@@ -14,13 +14,15 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <sstream>
 
 namespace darkroom {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 std::string lower(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -70,34 +72,11 @@ float ttkDepthToPlanar(float d, double nearPlane, double farPlane) {
     return float(nearPlane + double(d) * (farPlane - nearPlane));
 }
 
-VtiImage readVti(const std::string& path) {
-    const std::string data = mesh::readWholeFile(path, "image");
-    const mesh::VtkXmlDocument doc = mesh::parseVtkXml(data, path);
-    const mesh::XmlElement& root = *doc.root;
-    if (root.name != "VTKFile") fail(path, root, "expected <VTKFile> as the root element, got <" + root.name + ">");
-    if (root.attributeOr("type", "") != "ImageData")
-        fail(path, root, "dataset type is '" + root.attributeOr("type", "") + "'; expected ImageData");
-    const mesh::VtkXmlEncoding enc = mesh::vtkXmlEncoding(doc, path);
-    const mesh::XmlElement* image = root.child("ImageData");
-    if (!image) fail(path, root, "missing <ImageData>");
-    const auto whole = extent(path, *image, "WholeExtent");
-    // Sizes in checked 64-bit arithmetic: extents near the integer limits would overflow.
-    long long W = 0, H = 0;
-    const bool overflow = __builtin_sub_overflow(whole[1], whole[0], &W) || __builtin_add_overflow(W, 1, &W) ||
-                          __builtin_sub_overflow(whole[3], whole[2], &H) || __builtin_add_overflow(H, 1, &H);
-    if (overflow || W < 1 || H < 1 || W > (1 << 20) || H > (1 << 20) || whole[5] != whole[4])
-        throw InputError(fmt::format("{}:{}: WholeExtent {} {} {} {} {} {} is not a 2-D image (expected x0 <= x1 and "
-                                     "y0 <= y1 at most 1048576 apart, and one z slice)",
-                                     path, image->line, whole[0], whole[1], whole[2], whole[3], whole[4], whole[5]));
-    checkImagePixels(std::uint64_t(W), std::uint64_t(H), fmt::format("{}:{}: WholeExtent", path, image->line));
-    const mesh::XmlElement* piece = image->child("Piece");
-    if (!piece) fail(path, *image, "missing <Piece>");
-    if (extent(path, *piece, "Extent") != whole)
-        fail(path, *piece, "the piece's Extent differs from WholeExtent; images split into pieces are not read");
-    for (const auto& c : image->children)
-        if (c->name == "Piece" && c.get() != piece) fail(path, *c, "a second <Piece>; one piece per image is read");
+namespace {
 
-    VtiImage out;
+// TTK's camera, from the image's field data (none when it has no CamPosition).
+std::optional<TtkCamera> ttkCameraOf(const std::string& path, const mesh::XmlElement* image,
+                                     const mesh::VtkXmlEncoding& enc, long long W, long long H) {
     // Field data: TTK's camera.
     std::map<std::string, std::vector<double>> field;
     if (const mesh::XmlElement* fd = image->child("FieldData"))
@@ -129,10 +108,16 @@ VtiImage readVti(const std::string& path) {
             throw Error(fmt::format("{}: CamDirection (or CamFocalPoint - CamPosition) is zero or parallel to CamUp; "
                                     "expected a usable TTK camera",
                                     path));
-        out.ttkCamera = t;
+        return t;
     }
 
-    // Point arrays -> channels, rows flipped (VTK images start at the bottom).
+    return std::nullopt;
+}
+
+// The point arrays as channels (a 1-component Depth array as Z), rows
+// flipped: VTK images start at the bottom.
+void readChannels(const std::string& path, const mesh::XmlElement* piece, const mesh::VtkXmlEncoding& enc,
+                  long long W, long long H, VtiImage& out) {
     std::vector<mesh::VtkArray> arrays;
     if (const mesh::XmlElement* pd = piece->child("PointData"))
         for (const auto& c : pd->children)
@@ -178,6 +163,40 @@ VtiImage readVti(const std::string& path) {
                 }
         }
     }
+}
+
+}  // namespace
+
+VtiImage readVti(const std::string& path) {
+    const std::string data = mesh::readWholeFile(path, "image");
+    const mesh::VtkXmlDocument doc = mesh::parseVtkXml(data, path);
+    const mesh::XmlElement& root = *doc.root;
+    if (root.name != "VTKFile") fail(path, root, "expected <VTKFile> as the root element, got <" + root.name + ">");
+    if (root.attributeOr("type", "") != "ImageData")
+        fail(path, root, "dataset type is '" + root.attributeOr("type", "") + "'; expected ImageData");
+    const mesh::VtkXmlEncoding enc = mesh::vtkXmlEncoding(doc, path);
+    const mesh::XmlElement* image = root.child("ImageData");
+    if (!image) fail(path, root, "missing <ImageData>");
+    const auto whole = extent(path, *image, "WholeExtent");
+    // Sizes in checked 64-bit arithmetic: extents near the integer limits would overflow.
+    long long W = 0, H = 0;
+    const bool overflow = __builtin_sub_overflow(whole[1], whole[0], &W) || __builtin_add_overflow(W, 1, &W) ||
+                          __builtin_sub_overflow(whole[3], whole[2], &H) || __builtin_add_overflow(H, 1, &H);
+    if (overflow || W < 1 || H < 1 || W > (1 << 20) || H > (1 << 20) || whole[5] != whole[4])
+        throw InputError(fmt::format("{}:{}: WholeExtent {} {} {} {} {} {} is not a 2-D image (expected x0 <= x1 and "
+                                     "y0 <= y1 at most 1048576 apart, and one z slice)",
+                                     path, image->line, whole[0], whole[1], whole[2], whole[3], whole[4], whole[5]));
+    checkImagePixels(std::uint64_t(W), std::uint64_t(H), fmt::format("{}:{}: WholeExtent", path, image->line));
+    const mesh::XmlElement* piece = image->child("Piece");
+    if (!piece) fail(path, *image, "missing <Piece>");
+    if (extent(path, *piece, "Extent") != whole)
+        fail(path, *piece, "the piece's Extent differs from WholeExtent; images split into pieces are not read");
+    for (const auto& c : image->children)
+        if (c->name == "Piece" && c.get() != piece) fail(path, *c, "a second <Piece>; one piece per image is read");
+
+    VtiImage out;
+    out.ttkCamera = ttkCameraOf(path, image, enc, W, H);
+    readChannels(path, piece, enc, W, H, out);
     if (out.ttkCamera) out.buffer->metadata().camera = toDarkroomCamera(*out.ttkCamera);
     out.buffer->metadata().attributes["source"] = path;
     return out;

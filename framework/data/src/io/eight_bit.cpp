@@ -2,6 +2,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
+#include <darkroom/channel_text.h>
 
 #include <tbb/parallel_for.h>
 
@@ -15,12 +16,6 @@ namespace {
     throw Error("cannot write image '" + path + "': " + why);
 }
 
-std::string listChannels(const Buffer& b) {
-    std::string s;
-    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name + " (" + toString(c.type) + ")";
-    return s.empty() ? std::string("none") : s;
-}
-
 std::vector<std::string> defaultChannels(const Buffer& image, const std::string& path) {
     auto isFloat = [&](const char* n) { return image.channelType(n) == ChannelType::Float32; };
     std::vector<std::string> ch;
@@ -32,7 +27,7 @@ std::vector<std::string> defaultChannels(const Buffer& image, const std::string&
         for (const auto& c : image.channels())
             if (c.type == ChannelType::Float32 && c.name != "Z" && c.name != "A") ch.push_back(c.name);
         if (ch.size() != 1)
-            fail(path, "cannot choose which channels to write as 8-bit grey or colour from " + listChannels(image) +
+            fail(path, "cannot choose which channels to write as 8-bit grey or colour from " + channelListText(image, true) +
                            "; name them (ImageWriter's 'channels')");
     }
     if (isFloat("A")) ch.push_back("A");
@@ -54,7 +49,7 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
     std::vector<const float*> src;
     for (const auto& name : names) {
         const float* p = image.hostFloat(name);
-        if (!p) fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " + listChannels(image));
+        if (!p) fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " + channelListText(image, true));
         src.push_back(p);
     }
     // Linear -> sRGB code value (round to nearest), NaN -> 0; alpha is stored linearly.

@@ -10,6 +10,7 @@
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
 #include <darkroom/limits.h>
+#include <darkroom/channel_text.h>
 
 #include <IlmThreadPool.h>
 #include <ImfChannelList.h>
@@ -160,12 +161,6 @@ Imf::Compression compressionFor(const std::string& path, const std::string& text
                         "' (expected none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa or dwab)");
 }
 
-std::string listChannels(const Buffer& b) {
-    std::string s;
-    for (const auto& c : b.channels()) s += (s.empty() ? "" : ", ") + c.name + " (" + toString(c.type) + ")";
-    return s.empty() ? std::string("none") : s;
-}
-
 }  // namespace
 
 bool isExrFile(const std::string& path) {
@@ -251,7 +246,7 @@ void writeExr(const Buffer& image, const std::string& path, const ImageWriteOpti
     } else {
         for (const auto& name : options.channels) {
             const auto type = image.channelType(name);
-            if (!type) failWrite(path, "the image has no channel '" + name + "'; it has " + listChannels(image));
+            if (!type) failWrite(path, "the image has no channel '" + name + "'; it has " + channelListText(image, true));
             channels.push_back({name, *type});
         }
     }

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace darkroom::generators {
 namespace {
@@ -100,7 +101,7 @@ Vec3 demoFieldGradient(const Vec3& p) {
 }
 
 Vec3 abcVelocity(const Vec3& p, double a, double b, double c) {
-    constexpr double pi = 3.14159265358979323846;
+    constexpr double pi = std::numbers::pi;
     const double x = pi * (p.x + 1), y = pi * (p.y + 1), z = pi * (p.z + 1);
     // dp/dt = u(x(p)) / π, because x = π (p + 1).
     return Vec3{a * std::sin(z) + c * std::cos(y), b * std::sin(x) + a * std::cos(z),

@@ -1,4 +1,5 @@
 #include "generator_params.h"
+#include <darkroom/strings.h>
 
 #include <darkroom/error.h>
 
@@ -10,16 +11,9 @@
 namespace darkroom::generators {
 namespace {
 
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t\r\n");
-    return s.substr(b, e - b + 1);
-}
-
 // Whole-string parse: "12abc" and "" are errors, not 12 and 0.
 bool parseDouble(const std::string& text, double& out) {
-    const std::string t = trim(text);
+    const std::string t = std::string(trimSpace(text));
     if (t.empty()) return false;
     const char* first = t.data();
     if (*first == '+') ++first;  // from_chars rejects a leading '+', people write it
@@ -69,7 +63,7 @@ Vec3 GeneratorParams::vec3(const std::string& key, const Vec3& fallback) {
     if (!text) return fallback;
     // Accept "1 2 3", "1, 2, 3" and "[1, 2, 3]": the scene file may hand a
     // YAML sequence over in any of these spellings.
-    std::string t = trim(*text);
+    std::string t = std::string(trimSpace(*text));
     if (t.size() >= 2 && t.front() == '[' && t.back() == ']') t = t.substr(1, t.size() - 2);
     for (char& c : t)
         if (c == ',') c = ' ';
@@ -94,7 +88,7 @@ std::string GeneratorParams::choice(const std::string& key, const std::string& f
                                     const std::vector<std::string>& options) {
     const std::string* text = find(key);
     if (!text) return fallback;
-    const std::string t = trim(*text);
+    const std::string t = std::string(trimSpace(*text));
     for (const auto& o : options)
         if (o == t) return t;
     fail(key, fmt::format("must be one of {}, got '{}'", fmt::join(options, ", "), *text));

@@ -18,10 +18,11 @@
 //   ends, since Embree caps a tube differently where it has no neighbour.
 //
 // The framework knows nothing of MPI: the processes talk through ProcessGroup
-// (the runner's is MPI_Allgatherv). Errors are agreed too: a problem on one
+// (darkroom/core/process_group.h; the runner's is MPI_Allgatherv). Errors are agreed too: a problem on one
 // process (a piece it cannot read) makes every process throw the same
 // darkroom::Error, so none is left waiting in a collective.
 #include <darkroom/export.h>
+#include <darkroom/core/process_group.h>
 #include <darkroom/scene/scene_file.h>
 
 #include <cstdint>
@@ -29,16 +30,6 @@
 #include <vector>
 
 namespace darkroom {
-
-class DARKROOM_API ProcessGroup {
-public:
-    virtual ~ProcessGroup();
-    virtual int rank() const = 0;
-    virtual int size() const = 0;
-    // Every process's string, in rank order, on every process. Collective:
-    // every process calls it the same number of times in the same order.
-    virtual std::vector<std::string> allGather(const std::string& mine) = 0;
-};
 
 struct PartitionedScene {
     // The whole scene's objects (same count, order, names, representations

@@ -4,15 +4,16 @@
 // (docs/capture.md): the scene file's content, the mesh and volume files it
 // reads (name, size, modification time), the resolution, the cameras,
 // the channels asked for, the backend, the compression and --half.
+#include <darkroom/export.h>
 #include <darkroom/data/cinema/writer.h>
 #include <darkroom/scene/scene_file.h>
 
 #include <string>
 #include <vector>
 
-namespace darkroom::cli {
+namespace darkroom::workflows {
 
-std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const SceneDescription& scene,
+DARKROOM_API std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const SceneDescription& scene,
                                             const std::string& compression, bool half);
 
-}  // namespace darkroom::cli
+}  // namespace darkroom::workflows

@@ -7,13 +7,14 @@
 // database one process writes, byte for byte (docs/scale-out.md, "Batch
 // shading"). The staging folder lies beside the database, so its products
 // are renamed, not copied, into place.
+#include <darkroom/export.h>
 #include <darkroom/core/evaluator.h>
 
 #include <set>
 #include <string>
 #include <vector>
 
-namespace darkroom::cli {
+namespace darkroom::workflows {
 
 struct DatabaseSink {
     std::string node;
@@ -21,19 +22,20 @@ struct DatabaseSink {
     std::string database;  // resolved as the node resolves it
     std::string mode;      // the node's: create, overwrite or resume
     std::string format;    // the node's product format (png, exr), when it has one
+    std::string pipeline;  // what the node records as its upstream pipeline (pipeline_record.h), when it does
 };
 
 // The sinks among `sinks` with a connected `row` input and a `database` path
 // parameter. One whose database comes through an edge is left to itself
 // alone, and refused (Error) over ranks, where it could not be staged.
-std::vector<DatabaseSink> databaseSinks(const Graph& graph, const std::vector<std::string>& sinks,
+DARKROOM_API std::vector<DatabaseSink> databaseSinks(const Graph& graph, const std::vector<std::string>& sinks,
                                         const EvaluatorOptions& options, bool overRanks);
 
-std::string stagingFolder(const DatabaseSink& sink);
-std::string stagingDatabase(const DatabaseSink& sink, int rank);
+DARKROOM_API std::string stagingFolder(const DatabaseSink& sink);
+DARKROOM_API std::string stagingDatabase(const DatabaseSink& sink, int rank);
 
 // "node 'store' (CinemaWriter)", to begin messages with.
-std::string label(const DatabaseSink& sink);
+DARKROOM_API std::string label(const DatabaseSink& sink);
 
 // Before the entries, by one process: throws Error, as the writer would at
 // its first entry, when the database does not suit the node's mode (create:
@@ -42,17 +44,17 @@ std::string label(const DatabaseSink& sink);
 // A staging database that another run is writing is refused, and so is a
 // <database>.staging that Darkroom did not make (no marker inside): it is
 // never read nor removed. `overRanks`: makes the staging folder, marked.
-void prepareDatabase(const DatabaseSink& sink, bool overRanks);
+DARKROOM_API void prepareDatabase(const DatabaseSink& sink, bool overRanks);
 
 // After every rank has finished, by one process: adopts every staged entry
 // into the database, opened in the node's mode (resume keeps the entries it
 // has), and removes the staging folder. Nothing staged: nothing changes.
 // Throws Error; what it could not adopt stays staged for a resume.
-void mergeStagedEntries(const DatabaseSink& sink);
+DARKROOM_API void mergeStagedEntries(const DatabaseSink& sink);
 
 // The entries (file names without extension, as CinemaDatabase::entryName
 // gives them) that the database holds complete, in the node's format, and a
 // resume keeps; empty unless the mode is resume.
-std::set<std::string> entriesKeptByResume(const DatabaseSink& sink);
+DARKROOM_API std::set<std::string> entriesKeptByResume(const DatabaseSink& sink);
 
-}  // namespace darkroom::cli
+}  // namespace darkroom::workflows

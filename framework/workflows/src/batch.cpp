@@ -1,0 +1,299 @@
+#include <darkroom/workflows/batch.h>
+
+#include "batch_plan.h"
+
+#include <darkroom/error.h>
+#include <darkroom/core/path_overlap.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/workflows/written_databases.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace darkroom::workflows {
+
+namespace fs = std::filesystem;
+using namespace batch;
+
+namespace {
+
+// What the batch shades and writes, the same on every process.
+struct Plan {
+    fs::path source;  // the database read
+    std::optional<CinemaDatabase> db;
+    std::vector<std::size_t> rows;  // the selected rows, in database order
+    std::vector<std::string> entrySinks, finalSinks;
+    std::vector<OutputPort> outputs;
+    std::vector<DatabaseSink> databases;
+    bool staging = false;  // several processes write databases: each into its staging database
+    EvaluatorOptions options;
+
+    // The files entry `row` writes through the renamed output paths.
+    std::vector<std::string> filesOf(std::size_t row) const {
+        std::vector<std::string> files;
+        for (const auto& out : outputs)
+            files.push_back(resolvedOutput(options, perEntryPath(out.original, db->entryName(row))));
+        return files;
+    }
+};
+
+// "" when every entry has files of its own; else a message naming the
+// first two entries that would write the same file.
+std::string sharedOutputFile(const Plan& p) {
+    std::map<std::string, std::size_t> owner;
+    for (const std::size_t row : p.rows)
+        for (const auto& f : p.filesOf(row)) {
+            const auto [it, fresh] = owner.emplace(fs::absolute(f).lexically_normal().string(), row);
+            if (!fresh && it->second != row)
+                return "--foreach: the entries " + p.db->formatParameters(it->second) + " and " +
+                       p.db->formatParameters(row) + " would both be written to " + f +
+                       " (in file names every character but letters, digits and . + - becomes ~); "
+                       "nothing was shaded";
+        }
+    return "";
+}
+
+// The database read and the selected rows; throws InputError.
+void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
+    const Node* reader = g.node(s.reader);
+    if (!reader || !g.ports(*reader).input("database") || !g.ports(*reader).input("parameters"))
+        throw InputError("--foreach " + s.reader +
+                         ": expected the name of a CinemaReader node (with 'database' and 'parameters')");
+    p.source = currentValue(g, s.reader, "database");
+    if (p.source.is_relative()) p.source = fs::path(p.options.inputBase) / p.source;
+    try {
+        p.db.emplace(CinemaDatabase::open(p.source.string()));
+    } catch (const InputError&) {
+        throw;
+    } catch (const Error& e) {
+        throw InputError(e.what());
+    }
+    if (s.where.empty())
+        for (std::size_t r = 0; r < p.db->rowCount(); ++r) p.rows.push_back(r);
+    else
+        p.rows = p.db->selectWhere(s.where);
+    if (p.rows.empty()) throw InputError(p.source.string() + ": no entry matches '" + s.where + "'");
+}
+
+// The sinks per entry and after, what they write, and the refusals that
+// need no file system state: throws InputError.
+void planOutputs(const Graph& g, const BatchSettings& s, bool overRanks, Plan& p) {
+    // Sinks that depend on the entry run once per entry; the others (e.g. a
+    // Movie of the database the entries are written to) once, after the last.
+    const std::set<std::string> perEntry = downstreamOf(g, s.reader);
+    for (const auto& sink : g.sinks()) (perEntry.count(sink) ? p.entrySinks : p.finalSinks).push_back(sink);
+    if (p.entrySinks.empty()) std::swap(p.entrySinks, p.finalSinks);  // nothing reads the entry: every sink per entry
+    p.outputs = outputPorts(g, p.entrySinks);
+    try {
+        p.databases = databaseSinks(g, p.entrySinks, p.options, overRanks);
+    } catch (const Error& e) {
+        throw InputError(e.what());
+    }
+    p.staging = overRanks && !p.databases.empty();
+    // A database written over the one read would lose the products being
+    // shaded (D1 of issue 26). The node refuses the same when it runs alone;
+    // under mpirun it writes a staging database, and only the merge would
+    // meet the source.
+    for (const auto& d : p.databases)
+        if (pathsOverlap(d.database, p.source.string()))
+            throw InputError(label(d) + ": the output " + d.database + " " +
+                             overlapWording(d.database, p.source.string()) + " " + absoluteNormal(p.source.string()) +
+                             ", the database node '" + s.reader +
+                             "' reads; writing there would destroy the input. Choose an output outside the inputs");
+    // Two entries whose parameters give one file name (a/b and a~b both
+    // become a~b) would overwrite each other.
+    if (const std::string clash = sharedOutputFile(p); !clash.empty()) throw InputError(clash);
+}
+
+// The positions in p.rows still to shade, the same on every process: the
+// lead checks the databases against their writers' modes (a refusal stops
+// the run before any shading) and decides what a resume keeps.
+std::vector<std::size_t> agreeTodo(const BatchSettings& s, const Plan& p, ProcessGroup& group) {
+    std::string todo, refused;
+    if (group.lead()) {
+        std::vector<std::set<std::string>> keptByDatabase;
+        for (const auto& d : p.databases) {
+            try {
+                prepareDatabase(d, p.staging);
+                if (s.resume) keptByDatabase.push_back(entriesKeptByResume(d));
+            } catch (const Error& e) {
+                refused = label(d) + ": " + e.what();
+                break;
+            }
+        }
+        for (std::size_t k = 0; k < p.rows.size() && refused.empty(); ++k) {
+            bool done = s.resume && !(p.outputs.empty() && p.databases.empty());
+            for (const auto& f : p.filesOf(p.rows[k])) done = done && fs::is_regular_file(f) && fs::file_size(f) > 0;
+            for (const auto& entries : keptByDatabase) done = done && entries.count(p.db->entryName(p.rows[k]));
+            if (!done) todo += std::to_string(k) + " ";
+        }
+    }
+    if (const std::string e = group.agreedError(refused); !e.empty()) throw InputError(e);
+    group.broadcast(todo);
+    std::vector<std::size_t> out;
+    std::istringstream in(todo);
+    for (std::size_t k; in >> k;) out.push_back(k);
+    return out;
+}
+
+// Shades this process's share of `todo`; returns the positions it shaded,
+// one per line. An entry that fails ends this process's share (`failure`)
+// and stops the others taking more.
+std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
+                       const std::vector<std::size_t>& todo, ProcessGroup& group, const BatchCallbacks& cb,
+                       std::exception_ptr& failure) {
+    const std::unique_ptr<WorkQueue> queue = group.workQueue(todo.size());
+    const std::size_t kept = p.rows.size() - todo.size();
+    const double total = double(p.rows.size());
+    EvaluatorOptions o = p.options;
+    std::string records;
+    while (const auto next = queue->next()) {
+        const std::size_t position = todo[*next], row = p.rows[position];
+        const std::string entry = p.db->entryName(row);
+        g.setParameter(s.reader, "parameters", Value(p.db->formatParameters(row)));
+        for (const auto& out : p.outputs) g.setParameter(out.node, out.port, Value(perEntryPath(out.original, entry)));
+        // Progress between entries counts every process's; during one, this
+        // process's own fraction on top.
+        const double done = double(kept + queue->finishedEverywhere());
+        if (cb.progress && group.lead()) cb.progress(done / total, entry);
+        o.onProgress = [&cb, &group, done, total, entry](double f, const std::string&) {
+            if (cb.progress && group.lead()) cb.progress((done + f) / total, entry);
+        };
+        ev.setOptions(o);
+        try {
+            cb.evaluate("entry " + entry + " (" + std::to_string(position + 1) + " of " +
+                            std::to_string(p.rows.size()) + ")",
+                        p.entrySinks);
+        } catch (const Cancelled&) {
+            throw;
+        } catch (const GraphError&) {
+            failure = std::current_exception();
+        } catch (const Error& e) {
+            failure = std::make_exception_ptr(Error("entry " + entry + ": " + e.what()));
+        }
+        if (failure) {
+            queue->failed();
+            break;
+        }
+        records += std::to_string(position) + "\n";
+        queue->finished();
+    }
+    return records;
+}
+
+}  // namespace
+
+namespace {
+
+// The positions every process shaded (on the lead), and whether any failed.
+std::vector<std::string> gatherRecords(const std::string& mine, bool failedHere, ProcessGroup& group, bool& anyFailed) {
+    anyFailed = !group.agreedError(failedHere ? "failed" : "").empty();
+    std::vector<std::string> all = group.allGather(mine);
+    if (!group.lead()) all.clear();
+    return all;
+}
+
+// The index of the entries kept by the resume and shaded now, by any process.
+void writeIndexOf(const BatchSettings& s, const Plan& p, const std::vector<std::size_t>& todo,
+                  const std::vector<std::string>& all) {
+    std::map<std::size_t, std::vector<std::string>> filesByRow;
+    std::vector<bool> shaded(p.rows.size(), false);
+    for (const auto& text : all) {
+        std::istringstream in(text);
+        for (std::size_t k; in >> k;) shaded[k] = true;
+    }
+    const std::set<std::size_t> redo(todo.begin(), todo.end());
+    for (std::size_t k = 0; k < p.rows.size(); ++k) {
+        if (!shaded[k] && redo.count(k)) continue;
+        auto files = p.filesOf(p.rows[k]);
+        for (const auto& d : p.databases)
+            files.push_back((fs::path(d.database) / (p.db->entryName(p.rows[k]) + "." + d.format)).string());
+        filesByRow[p.rows[k]] = std::move(files);
+    }
+    writeIndex(s.index, *p.db, indexColumns(p.outputs, p.databases), filesByRow);
+}
+
+// On the lead, after every process has finished: the staged entries merged
+// (also after a failure, so the database holds what was shaded and a resume
+// completes it), and the index. The first failure is kept.
+void finishOnLead(const BatchSettings& s, const Plan& p, const std::vector<std::size_t>& todo,
+                  const std::vector<std::string>& all, std::exception_ptr& failure) {
+    const auto keep = [&failure](const std::string& message) {
+        if (!failure) failure = std::make_exception_ptr(Error(message));
+    };
+    for (const auto& d : p.databases) {
+        if (!p.staging) break;
+        try {
+            mergeStagedEntries(d);
+        } catch (const Error& e) {
+            keep(label(d) + ": " + e.what());
+        }
+    }
+    if (s.index.empty()) return;
+    try {
+        writeIndexOf(s, p, todo, all);
+    } catch (const Error& e) {
+        keep(e.what());
+    }
+}
+
+// The sinks that run once after the last entry, on the lead.
+void runFinalSinks(Evaluator& ev, const Plan& p, ProcessGroup& group, const BatchCallbacks& cb,
+                   std::exception_ptr& failure) {
+    if (!group.lead() || p.finalSinks.empty()) return;
+    EvaluatorOptions o = p.options;
+    o.onProgress = [&cb](double f, const std::string& node) {
+        if (cb.progress) cb.progress(f, node);
+    };
+    ev.setOptions(o);
+    try {
+        cb.evaluate("after the last entry", p.finalSinks);
+    } catch (const Cancelled&) {
+        throw;
+    } catch (const GraphError&) {
+        failure = std::current_exception();
+    } catch (const Error& e) {
+        failure = std::make_exception_ptr(Error(std::string("after the last entry: ") + e.what()));
+    }
+}
+
+}  // namespace
+
+BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions options, const BatchSettings& settings,
+                          ProcessGroup& group, const BatchCallbacks& callbacks) {
+    BatchCallbacks cb = callbacks;
+    if (!cb.evaluate)
+        cb.evaluate = [&](const std::string&, const std::vector<std::string>& sinks) { evaluator.run(graph, sinks); };
+    Plan p;
+    p.options = std::move(options);
+    // Every process opens the same database and meets the same problems.
+    openSource(graph, settings, p);
+    planOutputs(graph, settings, group.size() > 1, p);
+    const std::vector<std::size_t> todo = agreeTodo(settings, p, group);
+    // Under several processes each writes the entries it shades into a
+    // staging database of its own; the lead adopts them all at the end.
+    for (const auto& d : p.databases) {
+        if (!p.staging) break;
+        graph.setParameter(d.node, "database", Value(stagingDatabase(d, group.rank())));
+        graph.setParameter(d.node, "mode", Value(std::string("overwrite")));
+    }
+    BatchSummary summary;
+    summary.selected = p.rows.size();
+    summary.kept = p.rows.size() - todo.size();
+    const std::string records = shadeShare(graph, evaluator, settings, p, todo, group, cb, summary.failure);
+    // The writers release their staging databases (data.csv written a last
+    // time, lock removed) before the lead reads them.
+    if (p.staging) evaluator.clearCache();
+    bool anyFailed = false;
+    const std::vector<std::string> all = gatherRecords(records, bool(summary.failure), group, anyFailed);
+    summary.failedElsewhere = anyFailed && !summary.failure;
+    for (const auto& text : all) summary.shadedPerProcess.push_back(std::size_t(std::count(text.begin(), text.end(), '\n')));
+    if (group.lead()) finishOnLead(settings, p, todo, all, summary.failure);
+    if (!summary.failure && !anyFailed) runFinalSinks(evaluator, p, group, cb, summary.failure);
+    return summary;
+}
+
+}  // namespace darkroom::workflows

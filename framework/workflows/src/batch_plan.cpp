@@ -1,0 +1,110 @@
+#include "batch_plan.h"
+
+#include <darkroom/atomic_file.h>
+#include <darkroom/data/cinema/csv.h>
+
+#include <filesystem>
+
+namespace darkroom::workflows::batch {
+
+namespace fs = std::filesystem;
+
+// out.png -> out_phi=30_theta=45.png, or the {entry} placeholder replaced.
+std::string perEntryPath(const std::string& path, const std::string& entry) {
+    std::string out = path;
+    const std::string tag = "{entry}";
+    if (out.find(tag) != std::string::npos) {
+        for (auto pos = out.find(tag); pos != std::string::npos; pos = out.find(tag, pos + entry.size()))
+            out.replace(pos, tag.size(), entry);
+        return out;
+    }
+    const fs::path p(path);
+    return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
+}
+
+// Every node that depends on `source` through edges (source included).
+std::set<std::string> downstreamOf(const Graph& g, const std::string& source) {
+    std::set<std::string> seen{source};
+    std::vector<std::string> todo{source};
+    while (!todo.empty()) {
+        const std::string n = todo.back();
+        todo.pop_back();
+        for (const Edge& e : g.edges())
+            if (e.from.node == n && seen.insert(e.to.node).second) todo.push_back(e.to.node);
+    }
+    return seen;
+}
+
+// The Path parameters of the output nodes that run per entry, to rename per
+// entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
+// has) names its entries itself: its paths stay as given.
+std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks) {
+    std::vector<OutputPort> out;
+    for (const auto& name : sinks) {
+        const Node* n = g.node(name);
+        if (g.ports(*n).input("row") && !g.edgesInto(name, "row").empty()) continue;
+        for (const auto& p : g.ports(*n).inputs) {
+            if (p.type != PortType::Path) continue;
+            const Value* v = n->parameter(p.name);
+            const std::string original = v ? v->asString() : p.defaultValue.asString();
+            if (!original.empty()) out.push_back({name, p.name, original});
+        }
+    }
+    return out;
+}
+
+std::string currentValue(const Graph& g, const std::string& node, const std::string& port) {
+    const Node* n = g.node(node);
+    if (const Value* v = n->parameter(port)) return v->asString();
+    return g.ports(*n).input(port)->defaultValue.asString();
+}
+
+// Where the evaluator writes a relative output path (HostContext::resolveOutputPath).
+std::string resolvedOutput(const EvaluatorOptions& o, const std::string& path) {
+    const fs::path p(path);
+    const std::string& base = o.outputDir.empty() ? o.inputBase : o.outputDir;
+    if (p.is_absolute() || base.empty()) return p.string();
+    return (fs::path(base) / p).lexically_normal().string();
+}
+
+// The index's file columns: one per output path of the per-entry sinks and
+// one per database a row-fed sink writes (its product of the entry); FILE
+// alone, or FILE_<node>[_<port>] for several.
+std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
+                                      const std::vector<DatabaseSink>& databases) {
+    std::map<std::string, int> portsPerNode;
+    for (const auto& o : outputs) ++portsPerNode[o.node];
+    const std::size_t count = outputs.size() + databases.size();
+    std::vector<std::string> names;
+    for (const auto& o : outputs)
+        names.push_back(count == 1 ? "FILE" : "FILE_" + o.node + (portsPerNode[o.node] > 1 ? "_" + o.port : ""));
+    for (const auto& d : databases) names.push_back(count == 1 ? "FILE" : "FILE_" + d.node);
+    return names;
+}
+
+// The index: the database's parameter columns, then the file columns, one
+// row per entry in database order, file names relative to the index's folder.
+void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
+                const std::map<std::size_t, std::vector<std::string>>& filesByRow) {
+    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+    std::vector<std::string> cells;
+    const auto line = [&cells]() {
+        std::string text;
+        for (std::size_t k = 0; k < cells.size(); ++k) text += (k ? "," : "") + quoteCsvCell(cells[k]);
+        cells.clear();
+        return text + "\n";
+    };
+    const auto parameters = db.parameterColumns();
+    for (auto c : parameters) cells.push_back(db.columns()[c].name);
+    cells.insert(cells.end(), fileColumns.begin(), fileColumns.end());
+    std::string text = line();
+    for (const auto& [row, files] : filesByRow) {
+        for (auto c : parameters) cells.push_back(db.cell(row, c));
+        for (const auto& f : files) cells.push_back(fs::absolute(f).lexically_proximate(folder).string());
+        text += line();
+    }
+    if (!folder.empty()) fs::create_directories(folder);
+    writeFileAtomic(path, text);
+}
+
+}  // namespace darkroom::workflows::batch

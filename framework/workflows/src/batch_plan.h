@@ -1,0 +1,49 @@
+#pragma once
+// What a batch writes, worked out before any entry is shaded: the sinks per
+// entry and after the last, the output paths renamed per entry, and the
+// index of the entries and their files (batch.cpp).
+#include <darkroom/core/evaluator.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/workflows/written_databases.h>
+
+#include <cstddef>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace darkroom::workflows::batch {
+
+// out.png -> out_phi=30_theta=45.png, or the {entry} placeholder replaced.
+std::string perEntryPath(const std::string& path, const std::string& entry);
+
+// A Path input of a per-entry sink, renamed per entry.
+struct OutputPort {
+    std::string node, port, original;
+};
+
+// Every node that depends on `source` through edges (source included).
+std::set<std::string> downstreamOf(const Graph& g, const std::string& source);
+
+// The Path parameters of the output nodes that run per entry, to rename per
+// entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
+// has) names its entries itself: its paths stay as given.
+std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks);
+
+// A node's parameter, or its port's default.
+std::string currentValue(const Graph& g, const std::string& node, const std::string& port);
+
+// Where the evaluator writes a relative output path (HostContext::resolveOutputPath).
+std::string resolvedOutput(const EvaluatorOptions& o, const std::string& path);
+
+// The index's file columns: one per output path of the per-entry sinks and
+// one per database a row-fed sink writes; FILE alone, or FILE_<node>[_<port>].
+std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
+                                      const std::vector<DatabaseSink>& databases);
+
+// The index: the database's parameter columns, then the file columns, one
+// row per entry in database order, file names relative to the index's folder.
+void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
+                const std::map<std::size_t, std::vector<std::string>>& filesByRow);
+
+}  // namespace darkroom::workflows::batch

@@ -1,0 +1,68 @@
+#include <darkroom/workflows/pipeline_record.h>
+
+#include "content_hash.h"
+
+#include <darkroom/value.h>
+
+#include <set>
+#include <vector>
+
+namespace darkroom::workflows {
+
+namespace {
+
+// The nodes `sink` depends on through edges, by name (so in a stable order).
+std::set<std::string> upstreamOf(const Graph& g, const std::string& sink) {
+    std::set<std::string> seen;
+    std::vector<std::string> todo{sink};
+    while (!todo.empty()) {
+        const std::string at = todo.back();
+        todo.pop_back();
+        for (const Edge& e : g.edgesInto(at))
+            if (seen.insert(e.from.node).second) todo.push_back(e.from.node);
+    }
+    return seen;
+}
+
+bool isReader(const Graph& g, const Node& n) {
+    const PortSpec* database = g.ports(n).input("database");
+    return database && database->type == PortType::Path;
+}
+
+std::string digestOf(const Graph& g, const Node& n) {
+    ContentHash h;
+    h.add(n.type);
+    for (const PortSpec& in : g.ports(n).inputs) {
+        if (in.name == "parameters" && isReader(g, n)) continue;
+        h.add(in.name);
+        const std::vector<Edge> edges = g.edgesInto(n.name, in.name);
+        for (const Edge& e : edges) h.add("<- " + e.from.str());
+        if (!edges.empty() || in.type == PortType::Image) continue;
+        const Value* v = n.parameter(in.name);
+        h.add(formatValue(in.type, v ? *v : in.defaultValue));
+    }
+    return h.hex();
+}
+
+}  // namespace
+
+std::string upstreamPipeline(const Graph& g, const std::string& sink) {
+    std::string out;
+    for (const std::string& name : upstreamOf(g, sink)) {
+        const Node* n = g.node(name);
+        out += "node '" + n->name + "' (" + n->type + ")\t" + digestOf(g, *n) + "\n";
+    }
+    return out;
+}
+
+void describeUpstreamPipelines(Graph& g) {
+    std::vector<std::string> writers;
+    for (const Node& n : g.nodes()) {
+        const PortSpec* p = g.ports(n).input("pipeline");
+        if (p && p->type == PortType::String && !n.parameter("pipeline") && g.edgesInto(n.name, "pipeline").empty())
+            writers.push_back(n.name);
+    }
+    for (const auto& w : writers) g.setParameter(w, "pipeline", Value(upstreamPipeline(g, w)));
+}
+
+}  // namespace darkroom::workflows

@@ -1,0 +1,99 @@
+// `darkroom capture`'s whole job, alone or over processes, for every front end.
+#include <darkroom/workflows/capture.h>
+
+#include <darkroom/error.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+#include <darkroom/scene/scene_file.h>
+#include <darkroom/scene/scene_partition.h>
+#include <darkroom/workflows/capture_origin.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace darkroom::workflows {
+
+namespace {
+
+// The whole scene alone; over several processes, this one's part (each
+// loads the same objects, holding a share of their primitives). Errors are
+// the same on every process.
+PartitionedScene loadScene(const std::string& path, ProcessGroup& group) {
+    try {
+        if (group.size() > 1) return loadSceneFilePart(path, group);
+        PartitionedScene whole;
+        whole.description = loadSceneFile(path);
+        return whole;
+    } catch (const InputError&) {
+        throw;
+    } catch (const Error& e) {
+        throw InputError(e.what());
+    }
+}
+
+// The writer's options: the request's, the scene's point lists as
+// attachments (their contents into `attachments`), and the origin a resume compares.
+CinemaWriterOptions writerOptions(const SceneCapture& r, const SceneDescription& scene,
+                                  std::map<std::string, std::string>& attachments) {
+    CinemaWriterOptions wo;
+    wo.overwrite = r.overwrite;
+    wo.resume = r.resume;
+    wo.image.compression = r.compression;
+    wo.image.halfFloat = r.half;
+    attachments = pointListAttachments(scene, wo);
+    wo.origin = captureOrigin(r.scene, scene, r.compression, r.half);
+    return wo;
+}
+
+int threadsPerProcess(const SceneCapture& r, const ProcessGroup& group) {
+    if (r.threads > 0 || group.size() == 1) return r.threads;
+    const int cores = int(std::thread::hardware_concurrency());
+    return std::max(1, cores / std::max(1, group.onThisNode()));
+}
+
+}  // namespace
+
+CaptureSummary captureSceneFile(const SceneCapture& r, const Registry& registry, ProcessGroup& group) {
+    const PartitionedScene part = loadScene(r.scene, group);
+    const SceneDescription& scene = part.description;
+    if (r.warn)
+        for (const auto& w : scene.warnings) r.warn(w);
+    if (scene.cameras.empty()) throw InputError(r.scene + ": the scene has no cameras");
+
+    std::string error;
+    std::unique_ptr<CaptureBackend> backend;
+    CinemaWriterOptions wo;
+    CaptureSettings settings;
+    try {
+        backend = registry.createBackend(scene.backend);
+        backend->setScene(scene.scene);
+        wo = writerOptions(r, scene, settings.attachments);
+    } catch (const Error& e) {
+        error = e.what();
+    }
+    if (const std::string e = group.agreedError(error); !e.empty()) throw InputError(e);
+
+    std::vector<std::string> columns;
+    for (const auto& [k, v] : scene.cameras.front().parameters) columns.push_back(k);
+    std::unique_ptr<CinemaWriter> writer;
+    settings.openDatabase = [&]() -> CinemaWriter& {
+        writer = std::make_unique<CinemaWriter>(r.output, columns, wo);
+        return *writer;
+    };
+    settings.request = scene.request;
+    settings.primitiveOffsets = part.primitiveOffset;
+    settings.progress = r.progress;
+    settings.cancel = r.cancel;
+    FilterRunOptions ro;
+    ro.threads = threadsPerProcess(r, group);
+    ro.registry = &registry;
+    const std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
+    const RenderFn render = [&](const Camera& camera, const CaptureRequest& request) {
+        return backend->render(camera, request, *ctx);
+    };
+    const CaptureSummary summary = captureEntries(captureEntriesOf(scene), render, group, settings);
+    if (writer) writer->finish();
+    return summary;
+}
+
+}  // namespace darkroom::workflows

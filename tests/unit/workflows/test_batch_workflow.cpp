@@ -1,0 +1,131 @@
+// The batch-shading workflow called directly, without the runner: a
+// database shaded entry by entry into another, what a resume skips, what is
+// refused before any shading, how a failing entry is reported. (Over
+// processes it is tested through mpirun: mpi/tests/foreach_over_ranks_test.cpp
+// and cinema_writer_over_ranks_test.cpp.)
+#include "test_support.h"
+
+#include <darkroom/error.h>
+#include <darkroom/core/pipeline.h>
+#include <darkroom/data/cinema/database.h>
+#include <darkroom/data/cinema/writer.h>
+#include <darkroom/workflows/batch.h>
+#include <darkroom/workflows/pipeline_record.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace darkroom;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kPipeline = R"(darkroom: 1
+nodes:
+  read:
+    type: CinemaReader
+    parameters: {database: source.cdb}
+  write:
+    type: CinemaWriter
+    parameters: {database: shaded.cdb, format: exr}
+edges:
+  - read.image -> write.image
+  - read.row -> write.row
+)";
+
+struct Batch {
+    test::TempDir dir;
+    Graph graph = loadShading();
+    EvaluatorOptions options;
+    Batch() {
+        CinemaWriter w(dir.file("source.cdb"), {"time"});
+        for (double t : {1.0, 2.0, 3.0})
+            w.addEntry({{"time", CinemaValue(t)}}, *test::makeImage(6, 4, {"Z", "value"}, [=](int, int, int) {
+                return float(t);
+            }));
+        w.finish();
+        options.inputBase = dir.path();
+        options.outputDir = dir.file("out");
+        options.retainIntermediate = true;
+    }
+    static Graph loadShading() {
+        Diagnostics d;
+        Graph g = parsePipeline(kPipeline, "shade.yaml", test::pluginRegistry(), d);
+        workflows::describeUpstreamPipelines(g);
+        return g;
+    }
+    workflows::BatchSummary shade(workflows::BatchSettings s = {}) {
+        if (s.reader.empty()) s.reader = "read";
+        Evaluator ev(options);
+        SingleProcess alone;
+        return workflows::shadeEntries(graph, ev, options, s, alone, {});
+    }
+};
+
+}  // namespace
+
+TEST(BatchWorkflow, ShadesEveryEntryIntoTheDatabaseAndWritesTheIndex) {
+    Batch b;
+    workflows::BatchSettings s;
+    s.index = b.dir.file("out/index.csv");
+    const auto summary = b.shade(s);
+    ASSERT_FALSE(summary.failure);
+    EXPECT_EQ(summary.selected, 3u);
+    EXPECT_EQ(summary.kept, 0u);
+    EXPECT_EQ(summary.shadedPerProcess, (std::vector<std::size_t>{3}));
+    EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 3u);
+    EXPECT_EQ(test::readText(b.dir.file("out/index.csv")),
+              "time,FILE\n1,shaded.cdb/time=1.exr\n2,shaded.cdb/time=2.exr\n3,shaded.cdb/time=3.exr\n");
+}
+
+TEST(BatchWorkflow, AResumeShadesOnlyWhatTheDatabaseLacks) {
+    Batch b;
+    ASSERT_FALSE(b.shade().failure);
+    fs::remove(b.dir.file("out/shaded.cdb/time=2.exr"));
+    b.graph.setParameter("write", "mode", Value(std::string("resume")));
+    workflows::BatchSettings s;
+    s.resume = true;
+    const auto summary = b.shade(s);
+    ASSERT_FALSE(summary.failure);
+    EXPECT_EQ(summary.kept, 2u);
+    EXPECT_EQ(summary.shadedPerProcess, (std::vector<std::size_t>{1}));
+    EXPECT_TRUE(fs::is_regular_file(b.dir.file("out/shaded.cdb/time=2.exr")));
+}
+
+TEST(BatchWorkflow, WhatIsRefusedIsAnInputErrorBeforeAnyShading) {
+    Batch b;
+    workflows::BatchSettings s;
+    s.where = "time > 5";
+    EXPECT_THROW(b.shade(s), InputError);
+    s.where.clear();
+    s.reader = "write";
+    EXPECT_THROW(b.shade(s), InputError);
+    // The database written over the one read (D1 of issue 26).
+    b.graph.setParameter("write", "database", Value(b.dir.file("source.cdb")));
+    try {
+        b.shade();
+        FAIL() << "not refused";
+    } catch (const InputError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("writing there would destroy the input"));
+    }
+    EXPECT_EQ(CinemaDatabase::open(b.dir.file("source.cdb")).rowCount(), 3u);
+    EXPECT_FALSE(fs::exists(b.dir.file("out/shaded.cdb")));
+}
+
+TEST(BatchWorkflow, AFailingEntryIsReportedWithTheEntryAndTheRestIsKept) {
+    Batch b;
+    test::writeText(b.dir.file("source.cdb/time=2.exr"), "not an image");
+    const auto summary = b.shade();
+    ASSERT_TRUE(summary.failure);
+    EXPECT_FALSE(summary.failedElsewhere);
+    try {
+        std::rethrow_exception(summary.failure);
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("entry time=2: "));
+    }
+    // The entry before it is in the database; a resume completes it.
+    EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 1u);
+}
