@@ -1,12 +1,12 @@
 // Entry point of the capture plugin: registers the `Capture` node.
-#include "capture_filter.h"
+#include "capture.h"
 
 #include <darkroom/plugin.h>
 
 namespace {
 
 void registerTypes(darkroom::Registrar& r) {
-    r.addFilter<darkroom::CaptureFilter>(
+    r.addFilter<darkroom::Capture>(
         "Capture", "Input/Output",
         "Renders G-buffers (depth, scalars, normals, ids) of a scene file for one of its cameras through a "
         "capture backend (default embree). The scene and its acceleration structure are cached while only the "

@@ -1,4 +1,4 @@
-#include "fxaa_filter.h"
+#include "fxaa.h"
 
 #include <darkroom/plugin.h>
 

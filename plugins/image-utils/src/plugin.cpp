@@ -19,11 +19,11 @@ void registerTypes(darkroom::Registrar& r) {
         "Puts a colour or a vertical gradient (top row to bottom row) behind the scene: the image, with "
         "straight alpha A (or depth as coverage), composited over it. Other channels pass through.");
     r.addFilter<darkroom::ChannelSelect>(
-        "ChannelSelect", "Utility",
+        "ChannelSelect", "Image",
         "Keeps the listed channels in the listed order, renaming with SOURCE:NEWNAME (e.g. \"value:R\"), or "
         "drops them. A missing channel is an error listing those the image has.");
     r.addFilter<darkroom::Resize>(
-        "Resize", "Utility",
+        "Resize", "Image",
         "Resamples an image to a new size (box, bilinear or nearest) for previews and supersampled "
         "references. Colour and scalars are filtered, colour weighted by alpha, NaN skipped; depth Z and uint32 "
         "ids are never blended: they come from the nearest surface in a box footprint or from the nearest "

@@ -1,4 +1,4 @@
-#include "movie_node.h"
+#include "movie.h"
 
 #include <darkroom/plugin.h>
 

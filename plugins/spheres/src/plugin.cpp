@@ -1,4 +1,4 @@
-#include "spheres_node.h"
+#include "spheres.h"
 
 #include <darkroom/plugin.h>
 

@@ -6,7 +6,7 @@ namespace {
 
 void registerTypes(darkroom::Registrar& r) {
     r.addFilter<darkroom::Ssao>(
-        "SSAO", "Lighting",
+        "SSAO", "Shading",
         "Screen-space ambient occlusion from depth Z and the camera: a classic normal-oriented "
         "hemisphere estimator or a GTAO-style horizon estimator of cosine-weighted AO, for surfaces "
         "or for point/line geometry (thickness heuristic), followed by a depth-aware blur. Adds "

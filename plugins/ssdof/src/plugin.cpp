@@ -5,8 +5,8 @@
 namespace {
 
 void registerTypes(darkroom::Registrar& r) {
-    r.addFilter<darkroom::SSDoF>(
-        "SSDoF", "Lighting",
+    r.addFilter<darkroom::Ssdof>(
+        "SSDoF", "Camera",
         "Screen-space depth of field: a thin-lens circle of confusion from planar depth, focal "
         "distance and lens diameter (in camera terms), gathered with a round (golden-angle "
         "spiral) or hexagonal (separable skewed box blurs) aperture. Near out-of-focus objects "

@@ -16,7 +16,7 @@ namespace darkroom {
 
 using namespace ssdof;
 
-void SSDoF::execute(Context& ctx) {
+void Ssdof::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const int width = in->width(), height = in->height();
     const float* R = in->requireFloat("R");
@@ -41,7 +41,7 @@ void SSDoF::execute(Context& ctx) {
     computeNearReach(w);
     if (double(w.stride) * double(height + 2 * w.pad) >= double(std::numeric_limits<std::int32_t>::max()))
         throw Error("the image (" + std::to_string(width) + "x" + std::to_string(height) +
-                    ") is too large for SSDoF's 32-bit sample indices");
+                    ") is too large for Ssdof's 32-bit sample indices");
 
     // New colour, every pixel written by the gather; the rest is shared.
     std::vector<ChannelDesc> fresh{"R", "G", "B"};

@@ -3,8 +3,8 @@
 
 namespace darkroom {
 
-// SSDoF: screen-space depth of field from colour and planar depth (see README).
-class SSDoF final : public Filter {
+// Ssdof: screen-space depth of field from colour and planar depth (see README).
+class Ssdof final : public Filter {
 public:
     enum class Method { Disc, Hexagon };
 

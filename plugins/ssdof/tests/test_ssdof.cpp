@@ -1,4 +1,4 @@
-// SSDoF through the plugin registry: known answers for in-focus identity, the
+// Ssdof through the plugin registry: known answers for in-focus identity, the
 // point-spread shape and size of both apertures, near/far bleeding rules, and
 // robustness on degenerate input.
 #include "../../normals/tests/simd_targets.h"
@@ -94,21 +94,21 @@ BufferPtr dot(int size, float z) {
 
 }  // namespace
 
-TEST(SSDoF, AWholePlaneAtTheFocalDistanceIsUnchanged) {
+TEST(Ssdof, AWholePlaneAtTheFocalDistanceIsUnchanged) {
     const auto in = scene(23, 17, [](int x, int y, int c) -> float {
         return c == 4 ? 3.0f : 0.1f + 0.8f * float((x * 7 + y * 3 + c * 5) % 11) / 10.0f;
     });
     for (const char* m : {"disc", "hexagon"}) EXPECT_TRUE(identical(*dof(in, lens(1.0, 3.0, m)), *in)) << m;
 }
 
-TEST(SSDoF, ZeroApertureIsTheIdentity) {
+TEST(Ssdof, ZeroApertureIsTheIdentity) {
     const auto in = scene(16, 12, [](int x, int y, int c) -> float {
         return c == 4 ? 1.0f + float(x + y) : 0.05f * float(x + c);
     });
     for (const char* m : {"disc", "hexagon"}) EXPECT_TRUE(identical(*dof(in, lens(0.0, 4.0, m)), *in)) << m;
 }
 
-TEST(SSDoF, DiscBlursAFarPointIntoADiscOfThePredictedRadius) {
+TEST(Ssdof, DiscBlursAFarPointIntoADiscOfThePredictedRadius) {
     // zf = 2, z = 8, A = 1 on a 64-pixel 90-degree camera: radius 6 px.
     const double r = cocRadius(camera(64, 64), 1.0, 2.0, 8.0);
     ASSERT_NEAR(r, 6.0, 1e-9);
@@ -121,7 +121,7 @@ TEST(SSDoF, DiscBlursAFarPointIntoADiscOfThePredictedRadius) {
     EXPECT_NEAR(s.energy, 1.0, 0.03);
 }
 
-TEST(SSDoF, DiscBlursANearPointIntoADiscOfThePredictedRadius) {
+TEST(Ssdof, DiscBlursANearPointIntoADiscOfThePredictedRadius) {
     const double r = cocRadius(camera(64, 64), 1.0, 2.0, 0.8);  // -12 px
     ASSERT_NEAR(r, -12.0, 1e-9);
     auto p = lens(1.0, 2.0, "disc");
@@ -133,7 +133,7 @@ TEST(SSDoF, DiscBlursANearPointIntoADiscOfThePredictedRadius) {
     EXPECT_NEAR(s.energy, 1.0, 0.03);
 }
 
-TEST(SSDoF, HexagonBlursAPointIntoAHexagonWithCornersUp) {
+TEST(Ssdof, HexagonBlursAPointIntoAHexagonWithCornersUp) {
     // Far (A = 2, z = 8: +12 px) and near (A = 1, z = 0.8: -12 px) points.
     for (const auto& [A, z] : {std::pair{2.0, 8.0f}, std::pair{1.0, 0.8f}}) {
         const double r = std::fabs(cocRadius(camera(64, 64), A, 2.0, z));
@@ -147,7 +147,7 @@ TEST(SSDoF, HexagonBlursAPointIntoAHexagonWithCornersUp) {
     }
 }
 
-TEST(SSDoF, HexagonRotatedByThirtyDegreesHasCornersSideways) {
+TEST(Ssdof, HexagonRotatedByThirtyDegreesHasCornersSideways) {
     auto p = lens(2.0, 2.0, "hexagon");
     p["rotation"] = {Value(30.0)};
     const Spread s = spread(*dof(dot(64, 8.0f), p), 32, 32);
@@ -168,7 +168,7 @@ BufferPtr squareOverPlane(float squareZ, float planeZ) {
 }
 }  // namespace
 
-TEST(SSDoF, NearSquareBleedsOverTheSharpPlaneBehindIt) {
+TEST(Ssdof, NearSquareBleedsOverTheSharpPlaneBehindIt) {
     // Square at z = 1: CoC -8 px; plane at the focal distance 2.
     ASSERT_NEAR(cocRadius(camera(64, 64), 1.0, 2.0, 1.0), -8.0, 1e-9);
     const BufferPtr in = squareOverPlane(1.0f, 2.0f);
@@ -201,7 +201,7 @@ TEST(SSDoF, NearSquareBleedsOverTheSharpPlaneBehindIt) {
     }
 }
 
-TEST(SSDoF, FarPlaneNeverBleedsOverANearerSharpSquare) {
+TEST(Ssdof, FarPlaneNeverBleedsOverANearerSharpSquare) {
     // ScenePlane at infinity (far-field CoC 16 px), square in focus at 2.
     const BufferPtr in = scene(64, 64, [](int x, int y, int c) -> float {
         const bool square = x >= 24 && x < 40 && y >= 24 && y < 40;
@@ -230,7 +230,7 @@ TEST(SSDoF, FarPlaneNeverBleedsOverANearerSharpSquare) {
     }
 }
 
-TEST(SSDoF, AutoFocusKeepsTheCentreSharp) {
+TEST(Ssdof, AutoFocusKeepsTheCentreSharp) {
     const BufferPtr in = scene(32, 32, [](int x, int y, int c) -> float {
         if (c == 4) return x < 8 ? 9.0f : 3.0f;
         return 0.1f + 0.8f * float((x * 5 + y * 3 + c) % 7) / 6.0f;
@@ -241,7 +241,7 @@ TEST(SSDoF, AutoFocusKeepsTheCentreSharp) {
     EXPECT_NE(at(*out, "R", 2, 16), at(*in, "R", 2, 16)) << "the far strip is blurred";
 }
 
-TEST(SSDoF, PassesOtherChannelsAndTheCameraThrough) {
+TEST(Ssdof, PassesOtherChannelsAndTheCameraThrough) {
     auto in = test::makeImage(12, 10, {"Z", "R", "G", "B", "value"}, [](int x, int y, int c) -> float {
         return c == 0 ? 1.0f + 0.5f * float(x) : 0.3f + 0.01f * float(x * y + c);
     });
@@ -255,7 +255,7 @@ TEST(SSDoF, PassesOtherChannelsAndTheCameraThrough) {
     }
 }
 
-TEST(SSDoF, DegenerateInputsGiveFiniteColourWithinTheInputRange) {
+TEST(Ssdof, DegenerateInputsGiveFiniteColourWithinTheInputRange) {
     auto withBackground = [](int w, int h, bool nanColour) {
         return scene(w, h, [=](int x, int y, int c) -> float {
             const bool bg = (x + y) % 3 == 0;
@@ -288,7 +288,7 @@ TEST(SSDoF, DegenerateInputsGiveFiniteColourWithinTheInputRange) {
                 }
 }
 
-TEST(SSDoF, OneAndFourThreadsGiveIdenticalImages) {
+TEST(Ssdof, OneAndFourThreadsGiveIdenticalImages) {
     const BufferPtr in = scene(97, 61, [](int x, int y, int c) -> float {
         if (c == 4) return x < 30 ? 0.9f : (y < 20 ? kInf : 2.0f + 0.05f * float(x));
         if (c == 3) return x > 80 ? 0.5f : 1.0f;
@@ -303,7 +303,7 @@ TEST(SSDoF, OneAndFourThreadsGiveIdenticalImages) {
 // every instruction set gives the same bits, with near and far fields,
 // background, transparent pixels, a width that is no multiple of a vector
 // and a rotated hexagon.
-TEST(SSDoF, ResultDoesNotDependOnTheSimdInstructionSet) {
+TEST(Ssdof, ResultDoesNotDependOnTheSimdInstructionSet) {
     const BufferPtr in = scene(83, 47, [](int x, int y, int c) -> float {
         if (c == 4) return x < 25 ? 0.9f : (y < 15 ? kInf : 2.0f + 0.05f * float(x));
         if (c == 3) return x > 70 ? 0.5f : ((x + y) % 19 == 0 ? 0.0f : 1.0f);
@@ -320,7 +320,7 @@ TEST(SSDoF, ResultDoesNotDependOnTheSimdInstructionSet) {
     }
 }
 
-TEST(SSDoF, RefusesAnImageWithoutCameraOrDepth) {
+TEST(Ssdof, RefusesAnImageWithoutCameraOrDepth) {
     auto noCamera = test::makeImage(4, 4, kRgbaZ, [](int, int, int) { return 1.0f; });
     try {
         dof(noCamera, lens(1.0, 2.0, "disc"));

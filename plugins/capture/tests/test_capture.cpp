@@ -51,7 +51,7 @@ float centre(const BufferPtr& b, const char* channel) {
     return b->requireFloat(channel)[std::size_t(b->height() / 2) * b->width() + b->width() / 2];
 }
 
-TEST(CaptureFilter, RendersTheChosenCameraOfASceneFile) {
+TEST(Capture, RendersTheChosenCameraOfASceneFile) {
     SceneFiles files;
     auto f = makeCapture();
     ASSERT_TRUE(f);
@@ -70,7 +70,7 @@ TEST(CaptureFilter, RendersTheChosenCameraOfASceneFile) {
     EXPECT_EQ(second->metadata().camera->position, (Vec3{0, 0, 2}));
 }
 
-TEST(CaptureFilter, OverridesResolutionAndChannels) {
+TEST(Capture, OverridesResolutionAndChannels) {
     SceneFiles files;
     auto f = makeCapture();
     auto b = run(*f, {{"scene", {Value(files.scene)}}, {"width", {Value(10)}}, {"height", {Value(6)}},
@@ -83,7 +83,7 @@ TEST(CaptureFilter, OverridesResolutionAndChannels) {
     EXPECT_EQ(b->requireUInt("objectId")[3 * 10 + 5], 0u);
 }
 
-TEST(CaptureFilter, PicksUpAnEditedSceneFile) {
+TEST(Capture, PicksUpAnEditedSceneFile) {
     SceneFiles files(40.0);
     auto f = makeCapture();
     auto wide = run(*f, {{"scene", {Value(files.scene)}}});
@@ -102,7 +102,7 @@ TEST(CaptureFilter, PicksUpAnEditedSceneFile) {
     EXPECT_GT(covered(narrow), covered(wide));
 }
 
-TEST(CaptureFilter, BadInputGivesClearErrors) {
+TEST(Capture, BadInputGivesClearErrors) {
     SceneFiles files;
     auto f = makeCapture();
     try {

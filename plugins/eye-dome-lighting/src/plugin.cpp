@@ -14,4 +14,4 @@ void registerTypes(darkroom::Registrar& r) {
 
 }  // namespace
 
-DARKROOM_PLUGIN("edl", "0.1.0", registerTypes)
+DARKROOM_PLUGIN("eye-dome-lighting", "0.1.0", registerTypes)

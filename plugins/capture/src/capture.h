@@ -15,10 +15,10 @@ struct SceneDescription;
 // cached per (scene file, modification time, backend) inside the instance, so
 // moving through the cameras or changing the resolution re-renders without
 // re-reading meshes or rebuilding the BVH.
-class CaptureFilter final : public Filter {
+class Capture final : public Filter {
 public:
-    CaptureFilter();
-    ~CaptureFilter() override;
+    Capture();
+    ~Capture() override;
     PortList ports() const override {
         return {scene_, backend_, camera_, width_, height_, scalars_, normals_, ids_, result_};
     }

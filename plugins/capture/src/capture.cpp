@@ -1,4 +1,4 @@
-#include "capture_filter.h"
+#include "capture.h"
 
 #include <darkroom/error.h>
 #include <darkroom/scene/scene_file.h>
@@ -23,7 +23,7 @@ std::vector<std::string> splitList(const std::string& text) {
 
 }  // namespace
 
-struct CaptureFilter::Cache {
+struct Capture::Cache {
     std::string path;
     std::filesystem::file_time_type mtime;
     std::string backendType;
@@ -31,10 +31,10 @@ struct CaptureFilter::Cache {
     std::unique_ptr<CaptureBackend> backend;
 };
 
-CaptureFilter::CaptureFilter() = default;
-CaptureFilter::~CaptureFilter() = default;
+Capture::Capture() = default;
+Capture::~Capture() = default;
 
-void CaptureFilter::execute(Context& ctx) {
+void Capture::execute(Context& ctx) {
     const std::string path = ctx.get(scene_);
     if (path.empty()) throw Error("no scene file given (input 'scene')");
     std::error_code ec;

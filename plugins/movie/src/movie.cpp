@@ -1,4 +1,4 @@
-#include "movie_node.h"
+#include "movie.h"
 
 #include "h264_writer.h"
 #include "movie_output.h"

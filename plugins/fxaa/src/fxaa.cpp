@@ -1,4 +1,4 @@
-#include "fxaa_filter.h"
+#include "fxaa.h"
 
 #include "fxaa_kernel.h"
 #include "fxaa_presets.h"
