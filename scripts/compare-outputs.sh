@@ -10,24 +10,27 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 old=$(cd "$1" && pwd)
 new=$(cd "$2" && pwd)
 work=${3:-$(mktemp -d)}
+mkdir -p "$work"
 
 run_all() {  # BUILD OUT
   local darkroom="$1/bin/darkroom" out=$2
-  mkdir -p "$out/demo" "$out/volume" "$out/publish" "$out/gallery"
-  for part in surface flow particles; do
-    "$darkroom" -q capture "$root/docs/examples/demo/$part.yaml" -o "$out/demo/$part.cdb"
-  done
-  "$darkroom" -q capture "$root/docs/examples/publish/teaser-scene.yaml" -o "$out/publish/teaser.cdb"
-  if [ -f "$out/../blobs.vtu" ]; then
-    cp "$out/../blobs.vtu" "$out/volume/blobs.vtu"
-    "$darkroom" -q capture "$root/docs/examples/volume/tetrahedra.yaml" -o "$out/volume/tetrahedra.cdb" || true
-  fi
-  # The pipelines read ../../out/...: run them from a copy of docs/examples
-  # placed so that those paths lead to this build's databases.
-  rm -rf "$out/tree" && mkdir -p "$out/tree/docs" && cp -r "$root/docs/examples" "$out/tree/docs/examples"
+  # Scenes and pipelines name ../../out/... and ../../../shared/...: they run
+  # from a copy of docs/examples placed so that those lead to this build's
+  # outputs and to the shared data.
+  mkdir -p "$out/demo" "$out/volume" "$out/publish" "$out/gallery" "$out/tree/docs"
+  cp -r "$root/docs/examples" "$out/tree/docs/examples"
   ln -sfn "$out" "$out/tree/out"
-  for pipeline in "$out"/tree/docs/examples/*.yaml "$out"/tree/docs/examples/ttk/*.yaml \
-                  "$out"/tree/docs/examples/publish/*.yaml; do
+  ln -sfn "$root/../shared" "$out/shared"
+  local ex="$out/tree/docs/examples"
+  for part in surface flow particles; do
+    "$darkroom" -q capture "$ex/demo/$part.yaml" -o "$out/demo/$part.cdb"
+  done
+  "$darkroom" -q capture "$ex/publish/teaser-scene.yaml" -o "$out/publish/teaser.cdb"
+  if [ -f "$work/blobs.vtu" ]; then
+    cp -p "$work/blobs.vtu" "$out/volume/blobs.vtu"  # same time: the marker records it
+    "$darkroom" -q capture "$ex/volume/tetrahedra.yaml" -o "$out/volume/tetrahedra.cdb"
+  fi
+  for pipeline in "$ex"/*.yaml "$ex"/ttk/*.yaml "$ex"/volume/volume-*.yaml "$ex"/publish/*.yaml; do
     name=$(basename "$pipeline" .yaml)
     case "$name" in
       teaser-scene) continue ;;
@@ -38,22 +41,26 @@ run_all() {  # BUILD OUT
 }
 
 python3 "$root/docs/examples/volume/make_tetrahedra.py" "$work/blobs.vtu" 2>/dev/null || true
-run_all "$old" "$work/old" > "$work/old.log" 2>&1 || true
-run_all "$new" "$work/new" > "$work/new.log" 2>&1 || true
+# Both builds write into the same folder ($work/run, then moved), since
+# databases record the paths of the files they were made from.
+run_all "$old" "$work/run" > "$work/old.log" 2>&1 || true
+mv "$work/run" "$work/old"
+run_all "$new" "$work/run" > "$work/new.log" 2>&1 || true
+mv "$work/run" "$work/new"
 status=0
 count=0
 while IFS= read -r -d '' f; do
   rel=${f#"$work/old/"}
-  case "$rel" in tree/*) continue ;; esac
+  case "$rel" in tree/* | shared/*) continue ;; esac
   count=$((count + 1))
   other="$work/new/$rel"
   if [ ! -f "$other" ]; then echo "only in the old build's output: $rel"; status=1; continue; fi
   cmp -s "$f" "$other" || { echo "differs: $rel"; status=1; }
-done < <(find "$work/old" -path "$work/old/tree" -prune -o -type f -print0)
+done < <(find "$work/old" \( -path "$work/old/tree" -o -path "$work/old/shared" \) -prune -o -type f -print0)
 while IFS= read -r -d '' f; do
   rel=${f#"$work/new/"}
   [ -f "$work/old/$rel" ] || { echo "only in the new build's output: $rel"; status=1; }
-done < <(find "$work/new" -path "$work/new/tree" -prune -o -type f -print0)
+done < <(find "$work/new" \( -path "$work/new/tree" -o -path "$work/new/shared" \) -prune -o -type f -print0)
 echo "compared $count files written by the old build ($old) with the new ($new): $([ $status -eq 0 ] && echo identical || echo DIFFERENT)"
 grep -h "FAILED" "$work/old.log" "$work/new.log" || true
 exit $status
