@@ -11,34 +11,10 @@
 #include <set>
 
 namespace editor {
-namespace {
-
-std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
-    h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    return h;
-}
-
-// A node's identity for the cache as the evaluator sees it today: its type
-// and version and, recursively, what feeds which of its ports.
-std::uint64_t signature(const darkroom::Graph& g, const std::string& name,
-                        std::map<std::string, std::uint64_t>& memo) {
-    if (auto it = memo.find(name); it != memo.end()) return it->second;
-    const darkroom::Node* n = g.node(name);
-    std::uint64_t h = mix(std::hash<std::string>{}(n->type), n->version);
-    for (const auto& e : g.edgesInto(name)) {
-        if (!g.node(e.from.node)) continue;
-        h = mix(h, signature(g, e.from.node, memo));
-        h = mix(h, std::hash<std::string>{}(e.from.port + ">" + e.to.port));
-    }
-    return memo[name] = h;
-}
-
-}  // namespace
 
 std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node) {
     // A stack of our own rather than recursion, which a long chain would
-    // overflow. Callers take signatures in this (topological) order, so
-    // signature()'s recursion stays one level deep.
+    // overflow.
     std::set<std::string> needed;
     std::vector<std::string> toVisit{node};
     while (!toVisit.empty()) {
@@ -86,8 +62,6 @@ void EvaluatorAdapter::setInputBase(const std::string& folder) {
     if (o.inputBase == folder) return;
     o.inputBase = folder;
     evaluator_->setOptions(o);  // clears the cache: relative paths now mean other files
-    std::lock_guard<std::mutex> lock(mutex_);
-    lastSignature_.clear();
 }
 
 void EvaluatorAdapter::cancel() {
@@ -126,11 +100,6 @@ darkroom::BufferPtr EvaluatorAdapter::evaluate(const darkroom::Graph& graph, con
     darkroom::BufferPtr image = evaluator_->evaluateImage(graph, node, port, flag.get());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    std::map<std::string, std::uint64_t> memo;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        for (const auto& n : nodes) lastSignature_[n] = signature(graph, n, memo);
-    }
     if (profile) {
         profile->nodes.clear();
         profile->seconds = wall;
@@ -179,12 +148,8 @@ std::map<std::string, std::vector<std::string>> EvaluatorAdapter::inputChannels(
 }
 
 double EvaluatorAdapter::predictSeconds(const darkroom::Graph& graph, const std::string& node) const {
-    std::map<std::string, std::uint64_t> memo;
     double total = 0;
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (const auto& n : upstreamOf(graph, node)) {
-        const auto it = lastSignature_.find(n);
-        if (it != lastSignature_.end() && it->second == signature(graph, n, memo)) continue;  // cached
+    for (const auto& n : evaluator_->wouldRun(graph, {node})) {
         if (evaluator_->executions(n) == 0) return -1.0;
         total += evaluator_->lastSeconds(n);
     }

@@ -68,8 +68,9 @@ public:
     // Thread-safe: the running evaluation stops at its next check.
     void cancel();
 
-    // Seconds the nodes that would run again for node.port took last time;
-    // negative when one of them never ran here (no estimate).
+    // Seconds the nodes that would run again for node.port took last time,
+    // as the evaluator says (Evaluator::wouldRun); negative when one of them
+    // never ran here (no estimate).
     double predictSeconds(const darkroom::Graph& graph, const std::string& node) const;
 
     // For each of `nodes` with a channel port (channel_port.h): the channels
@@ -87,10 +88,7 @@ private:
     std::shared_ptr<darkroom::Evaluator> evaluator_;
     // The flag of the evaluation in progress (null between evaluations).
     std::shared_ptr<std::atomic<bool>> running_;
-    // What each node looked like when this adapter last evaluated it: its
-    // version and the versions feeding it, to predict which nodes are dirty.
-    mutable std::mutex mutex_;
-    std::map<std::string, std::uint64_t> lastSignature_;
+    mutable std::mutex mutex_;  // running_
 };
 
 // The nodes `node` depends on (itself included), in dependency order.

@@ -291,6 +291,44 @@ void Evaluator::setOptions(EvaluatorOptions options) {
     options_ = std::move(options);
 }
 
+std::set<std::string> Evaluator::wouldRun(const Graph& g, const std::vector<std::string>& targets) const {
+    // A copy of what the cache check reads, taken under the lock.
+    struct Snapshot {
+        bool valid = false;
+        std::uint64_t valueKey = 0;
+        std::vector<InputRead> reads;
+        std::vector<FileStamp> files;
+    };
+    const std::set<std::string> needed = neededBy(g, targets);
+    std::set<std::string> runs;
+    for (const auto& name : g.topologicalOrder()) {
+        if (!needed.count(name)) continue;
+        const Node& n = *g.node(name);
+        bool upstreamRuns = false;
+        for (const auto& e : g.edgesInto(name)) upstreamRuns = upstreamRuns || runs.count(e.from.node);
+        Snapshot st;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            const auto it = states_.find(name);
+            if (it != states_.end() && it->second->filterType == n.type && !n.placeholder)
+                st = {it->second->valid, it->second->valueKey, it->second->reads, it->second->files};
+        }
+        // The same test process() makes before it runs a node.
+        bool same = st.valid && !upstreamRuns;
+        try {
+            if (same) {
+                const Inputs inputs = gatherInputs(g, n, g.ports(n), states_, mutex_);
+                std::string reason;
+                same = cacheHolds(st, inputs, valueKey(n, g.ports(n), inputs, options_), reason);
+            }
+        } catch (const Error&) {
+            same = false;  // an input it would read is not held: it runs
+        }
+        if (!same) runs.insert(name);
+    }
+    return runs;
+}
+
 std::uint64_t Evaluator::executions(const std::string& node) const {
     std::lock_guard<std::mutex> lock(mutex_);
     auto it = states_.find(node);

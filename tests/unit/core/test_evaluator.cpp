@@ -3,6 +3,8 @@
 #include <darkroom/core/evaluator.h>
 #include <gtest/gtest.h>
 
+#include <set>
+
 using namespace darkroom;
 
 namespace {
@@ -62,6 +64,31 @@ TEST(Evaluator, CachesAndInvalidatesDownstreamOnly) {
     EXPECT_EQ(ev.executions("src2"), 2u);
     EXPECT_EQ(ev.executions("add"), 2u);
     EXPECT_EQ(ev.executions("noise"), 2u) << "not needed by this request";
+}
+
+// A UI asks the evaluator which nodes would run instead of modelling the
+// cache (issue 27): before any run every node needed; after one, none; after
+// an edit, the edited node and what depends on it, and what wouldRun said is
+// what then ran.
+TEST(Evaluator, SaysWhatWouldRunWithoutRunning) {
+    Graph g = diamond();
+    Evaluator ev;
+    using Names = std::set<std::string>;
+    EXPECT_EQ(ev.wouldRun(g, {"add"}), (Names{"src1", "src2", "add"}));
+    ev.run(g);
+    EXPECT_EQ(ev.wouldRun(g, {"sink"}), Names{});
+    g.setParameter("src2", "value", Value(20.0));
+    const Names predicted = ev.wouldRun(g, {"sink"});
+    EXPECT_EQ(predicted, (Names{"src2", "add", "noise", "sink"}));
+    EXPECT_EQ(ev.executions("src2"), 1u) << "asking runs nothing";
+    ev.run(g);
+    Names ran;
+    for (const auto& p : ev.lastProfile())
+        if (p.status == NodeProfile::Status::Ran) ran.insert(p.node);
+    EXPECT_EQ(ran, predicted);
+    g.disconnect({"src2", "image"}, {"add", "b"});  // rewired: add and below
+    g.connect({"src1", "image"}, {"add", "b"});
+    EXPECT_EQ(ev.wouldRun(g, {"sink"}), (Names{"add", "noise", "sink"}));
 }
 
 TEST(Evaluator, UnchangedNodesReturnTheSameBuffer) {

@@ -111,6 +111,12 @@ public:
     double lastSeconds(const std::string& node) const;
     // Every node the last evaluate/run needed, in the order they finished.
     std::vector<NodeProfile> lastProfile() const;
+    // The nodes an evaluation of `targets` would execute now, without running
+    // anything: those with no cached result, a changed value input, a changed
+    // file, or a node upstream that would execute (counted as executing,
+    // though it may end in a cached result when it recomputes the same
+    // planes). What a UI asks instead of modelling the cache itself.
+    std::set<std::string> wouldRun(const Graph& graph, const std::vector<std::string>& targets) const;
     // Memory held by cached outputs (distinct planes counted once).
     std::size_t cachedBytes() const;
     void clearCache();
