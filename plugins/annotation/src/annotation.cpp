@@ -1,7 +1,7 @@
 #include "annotation.h"
 
 #include "annotation_text.h"
-#include "text_drawing.h"
+#include <darkroom/text/text_drawing.h>
 
 #include <darkroom/error.h>
 

@@ -1,6 +1,6 @@
 #include "annotation_text.h"
 
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/row.h>

@@ -1,7 +1,7 @@
 #include "color_legend.h"
 
 #include "label_format.h"
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>

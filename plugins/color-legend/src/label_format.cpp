@@ -1,6 +1,6 @@
 #include "label_format.h"
 
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 

@@ -4,7 +4,7 @@
 // arithmetic on the text metrics (text_drawing.h), so the tests can check
 // positions without reading pixels.
 #include "nice_ticks.h"
-#include "text_drawing.h"
+#include <darkroom/text/text_drawing.h>
 
 #include <string>
 #include <vector>

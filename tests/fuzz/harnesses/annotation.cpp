@@ -9,7 +9,7 @@
 #include "harness.h"
 
 #include "annotation_text.h"
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 

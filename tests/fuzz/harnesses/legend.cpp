@@ -8,7 +8,7 @@
 
 #include "label_format.h"
 #include "nice_ticks.h"
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 

@@ -1,4 +1,4 @@
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 

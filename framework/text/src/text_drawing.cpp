@@ -1,6 +1,6 @@
-#include "text_drawing.h"
+#include <darkroom/text/text_drawing.h>
 
-#include "text_limits.h"
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/context.h>
 #include <darkroom/error.h>

@@ -1,8 +1,8 @@
 // The overlay drawing library: text metrics scale with the size, glyphs stay
 // inside their logical box, the font asked for is the font used, shapes cover
 // exactly their area, and painting blends as 8-bit renderers do.
-#include "text_drawing.h"
-#include "text_limits.h"
+#include <darkroom/text/text_drawing.h>
+#include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
 #include <darkroom/srgb.h>
