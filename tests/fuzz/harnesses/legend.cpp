@@ -68,7 +68,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         darkroom::legend::applyLabelFormat(ticks, spec);
         for (const auto& t : ticks)
-            fuzz::expect(t.label.size() <= 2 * darkroom::text::kMaxFormatWidth + 400, "formatted labels are bounded");
+            // Padding to at most kMaxFormatWidth characters of a fill that
+            // UTF-8 writes in up to 4 bytes ("\xe7\xe7\xe7>1000g" pads with a
+            // 3-byte character: 3,000 bytes), plus the number itself.
+            fuzz::expect(t.label.size() <= 4 * darkroom::text::kMaxFormatWidth + 400, "formatted labels are bounded");
     } catch (const darkroom::Error&) {
     }
     return 0;
