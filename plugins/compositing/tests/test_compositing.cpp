@@ -197,7 +197,7 @@ TEST(Compositing, KeepsTheFirstCameraAndWarnsWhenTheyDiffer) {
 TEST(Compositing, ResultDoesNotDependOnTheThreadCount) {
     auto make = [](int seed) {
         return test::makeImage(97, 61, {"Z", "value"}, [seed](int x, int y, int c) {
-            const std::uint32_t hsh = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(seed * 83492791);
+            const std::uint32_t hsh = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(seed) * 83492791u;
             if (c == 1) return float(hsh % 1000);
             return hsh % 7 == 0 ? kInf : float(hsh % 13);  // many ties and some background
         });
@@ -212,7 +212,7 @@ TEST(Compositing, ResultDoesNotDependOnTheThreadCount) {
 TEST(Compositing, ResultDoesNotDependOnTheSimdInstructionSet) {
     auto make = [](int seed) {
         return test::makeImage(71, 23, {"Z", "value"}, [seed](int x, int y, int c) {
-            const std::uint32_t hsh = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(seed * 83492791);
+            const std::uint32_t hsh = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(seed) * 83492791u;
             if (c == 1) return float(hsh % 1000);
             if (hsh % 11 == 0) return hsh % 2 ? kNaN : -kInf;
             return hsh % 7 == 0 ? kInf : float(hsh % 13);

@@ -106,7 +106,7 @@ TEST(Mix, ErrorsNameWhatIsMissing) {
 TEST(Mix, ResultDoesNotDependOnTheSimdInstructionSet) {
     auto image = [](int seed) {
         return makeImage(53, 7, {"R", "G", "B", "A", "Z", "value"}, [seed](int x, int y, int c) {
-            const std::uint32_t h = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(seed * 83492791 + c);
+            const std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ (std::uint32_t(seed) * 83492791u + std::uint32_t(c));
             if (h % 23 == 0) return kNaN;
             if (h % 29 == 0) return h % 2 ? kInf : -kInf;
             if (c == 3) return float(h % 9) * 0.15f - 0.1f;  // alpha below 0, 0, between, above 1

@@ -125,7 +125,7 @@ TEST(Resize, SizeRulesAndForwarding) {
 
 TEST(Resize, ResultDoesNotDependOnTheThreadCount) {
     const auto in = makeImage(67, 45, {"Z", "R", "A", "value"}, [](int x, int y, int c) {
-        const std::uint32_t h = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(c * 83492791);
+        const std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(c) * 83492791u;
         return c == 0 && h % 5 == 0 ? kInf : float(h % 1000) / 999.0f;
     });
     for (const char* f : {"box", "bilinear"})
@@ -140,7 +140,7 @@ TEST(Resize, ResultDoesNotDependOnTheThreadCount) {
 // with NaN, infinite and transparent samples and uint32 ids.
 TEST(Resize, ResultDoesNotDependOnTheSimdInstructionSet) {
     auto in = makeImage(67, 41, {"Z", "R", "G", "B", "A", "value"}, [](int x, int y, int c) {
-        const std::uint32_t h = std::uint32_t(x * 73856093) ^ std::uint32_t(y * 19349663) ^ std::uint32_t(c * 83492791);
+        const std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(c) * 83492791u;
         if (h % 17 == 0) return c == 0 ? kInf : kNaN;
         if (h % 31 == 0) return -kInf;
         if (c == 4) return float(h % 5) * 0.25f;
