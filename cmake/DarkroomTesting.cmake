@@ -28,6 +28,10 @@ function(darkroom_add_gtest NAME)
   if(ARG_LABEL)
     list(APPEND properties LABELS ${ARG_LABEL})
   endif()
+  # Tests that start mpirun themselves (cmake/DarkroomMpi.cmake says why).
+  if(ARG_LABEL STREQUAL "mpi" AND DARKROOM_MPI_TEST_ENV_MODIFICATION)
+    list(APPEND properties ENVIRONMENT_MODIFICATION "${DARKROOM_MPI_TEST_ENV_MODIFICATION}")
+  endif()
   gtest_discover_tests(${NAME} DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests
     PROPERTIES ${properties})

@@ -19,6 +19,10 @@ darkroom::Registry& registry();
 // Call from initTestCase: QSettings and recent files go to a fresh folder,
 // the screenshot folder exists.
 void prepare();
+// Under the sanitizers only (DARKROOM_SANITIZED): keeps Mesa's OpenGL driver
+// loaded to the end of the process (gui_support.cpp says why). prepare()
+// calls it; a test without prepare() calls it from initTestCase.
+void keepGlDriverLoaded();
 // Forgets saved settings (layout, recent files): a window starts with defaults.
 void clearSettings();
 // Waits until no evaluation waits, runs or is about to settle, then lets

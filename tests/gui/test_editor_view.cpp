@@ -3,6 +3,7 @@
 // pixel by pixel; pan and zoom upload and map nothing; the pixel probe
 // reads the buffer; a preview is drawn over the full image's area.
 #include "display.h"
+#include "gui_support.h"
 #include "render_view.h"
 #include "test_support.h"
 
@@ -70,6 +71,7 @@ private:
 
 void ViewTest::initTestCase() {
     QDir().mkpath(DARKROOM_GUI_ARTIFACTS);
+    guitest::keepGlDriverLoaded();
     image_ = testImage();
 }
 
