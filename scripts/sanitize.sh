@@ -15,7 +15,7 @@ if [ ! -f "$build/build.ninja" ]; then
     -DDARKROOM_WERROR=ON >/dev/null
 fi
 ninja -C "$build" -j "${DARKROOM_JOBS:-$(nproc)}"
-# Leaks of the libraries we load but do not own (OpenMPI, Qt, fontconfig, Mesa)
+# Leaks of the libraries we load but do not own (OpenMPI, D-Bus, fontconfig)
 # are suppressed by name in tests/sanitizers/lsan.supp; ours are reported.
 # asan.supp names the one library whose string use strict_string_checks
 # misreads. intercept_tls_get_addr=0: GCC 12's runtime takes some dynamic TLS
