@@ -13,16 +13,7 @@
 namespace editor {
 
 std::vector<std::string> upstreamOf(const darkroom::Graph& graph, const std::string& node) {
-    // A stack of our own rather than recursion, which a long chain would
-    // overflow.
-    std::set<std::string> needed;
-    std::vector<std::string> toVisit{node};
-    while (!toVisit.empty()) {
-        std::string n = std::move(toVisit.back());
-        toVisit.pop_back();
-        if (!graph.node(n) || !needed.insert(n).second) continue;
-        for (const auto& e : graph.edgesInto(n)) toVisit.push_back(e.from.node);
-    }
+    const std::set<std::string> needed = graph.upstreamOf({node});
     std::vector<std::string> order;
     try {
         for (const auto& n : graph.topologicalOrder())

@@ -159,14 +159,8 @@ Inputs gatherInputs(const Graph& g, const Node& n, const PortList& ports, const 
 template <class States>
 std::vector<UpstreamInput> upstreamInputsOf(const Graph& g, const std::string& node, const States& states,
                                             std::mutex& mutex) {
-    std::set<std::string> seen;
-    std::vector<std::string> todo{node};
-    while (!todo.empty()) {
-        const std::string at = todo.back();
-        todo.pop_back();
-        for (const Edge& e : g.edgesInto(at))
-            if (seen.insert(e.from.node).second) todo.push_back(e.from.node);
-    }
+    std::set<std::string> seen = g.upstreamOf({node});
+    seen.erase(node);
     std::vector<UpstreamInput> out;
     std::lock_guard<std::mutex> lock(mutex);
     for (const auto& name : seen)
@@ -233,22 +227,6 @@ void keepUnchangedOutputs(NodeResult& r, const std::map<std::string, Value>& pre
     }
 }
 
-// The part of the graph the targets depend on. Walked with a stack of our
-// own, not by recursion: a chain of a million nodes would overflow the
-// thread's stack.
-std::set<std::string> neededBy(const Graph& g, const std::vector<std::string>& targets) {
-    std::set<std::string> needed;
-    std::vector<std::string> toVisit(targets.rbegin(), targets.rend());
-    while (!toVisit.empty()) {
-        std::string n = std::move(toVisit.back());
-        toVisit.pop_back();
-        if (!needed.insert(n).second) continue;
-        for (const auto& e : g.edgesInto(n))
-            if (g.node(e.from.node)) toVisit.push_back(e.from.node);
-    }
-    return needed;
-}
-
 // Everything is checked before anything runs.
 void throwIfInvalid(const Graph& g, const std::set<std::string>& needed) {
     Diagnostics problems;
@@ -299,7 +277,7 @@ std::set<std::string> Evaluator::wouldRun(const Graph& g, const std::vector<std:
         std::vector<InputRead> reads;
         std::vector<FileStamp> files;
     };
-    const std::set<std::string> needed = neededBy(g, targets);
+    const std::set<std::string> needed = g.upstreamOf(targets);
     std::set<std::string> runs;
     for (const auto& name : g.topologicalOrder()) {
         if (!needed.count(name)) continue;
@@ -400,7 +378,7 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
     } clear{external ? nullptr : &cancelled_};
     const std::atomic<bool>& cancel = external ? *external : cancelled_;
 
-    const std::set<std::string> needed = neededBy(g, targets);
+    const std::set<std::string> needed = g.upstreamOf(targets);
     throwIfInvalid(g, needed);
     // Outputs still to be read in this evaluation, for retainIntermediate = false.
     std::map<std::string, int> pendingReaders;

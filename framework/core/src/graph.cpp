@@ -431,4 +431,27 @@ std::vector<std::string> Graph::sinks() const {
     return out;
 }
 
+std::set<std::string> Graph::reachable(const std::vector<std::string>& from, const EdgeIndex& index,
+                                       bool downstream) const {
+    std::set<std::string> seen;
+    std::vector<std::string> todo(from.rbegin(), from.rend());
+    while (!todo.empty()) {
+        std::string n = std::move(todo.back());
+        todo.pop_back();
+        if (!findNode(n) || !seen.insert(n).second) continue;
+        if (auto it = index.find(n); it != index.end())
+            for (const std::size_t i : it->second)
+                todo.push_back(downstream ? edges_[i].to.node : edges_[i].from.node);
+    }
+    return seen;
+}
+
+std::set<std::string> Graph::upstreamOf(const std::vector<std::string>& from) const {
+    return reachable(from, edgesTo_, false);
+}
+
+std::set<std::string> Graph::downstreamOf(const std::vector<std::string>& from) const {
+    return reachable(from, edgesFrom_, true);
+}
+
 }  // namespace darkroom

@@ -83,7 +83,7 @@ void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
 void planOutputs(const Graph& g, const BatchSettings& s, bool overRanks, Plan& p) {
     // Sinks that depend on the entry run once per entry; the others (e.g. a
     // Movie of the database the entries are written to) once, after the last.
-    const std::set<std::string> perEntry = downstreamOf(g, s.reader);
+    const std::set<std::string> perEntry = g.downstreamOf({s.reader});
     for (const auto& sink : g.sinks()) (perEntry.count(sink) ? p.entrySinks : p.finalSinks).push_back(sink);
     if (p.entrySinks.empty()) std::swap(p.entrySinks, p.finalSinks);  // nothing reads the entry: every sink per entry
     p.outputs = outputPorts(g, p.entrySinks);

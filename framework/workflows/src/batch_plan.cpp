@@ -22,19 +22,6 @@ std::string perEntryPath(const std::string& path, const std::string& entry) {
     return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
 }
 
-// Every node that depends on `source` through edges (source included).
-std::set<std::string> downstreamOf(const Graph& g, const std::string& source) {
-    std::set<std::string> seen{source};
-    std::vector<std::string> todo{source};
-    while (!todo.empty()) {
-        const std::string n = todo.back();
-        todo.pop_back();
-        for (const Edge& e : g.edges())
-            if (e.from.node == n && seen.insert(e.to.node).second) todo.push_back(e.to.node);
-    }
-    return seen;
-}
-
 // The Path parameters of the output nodes that run per entry, to rename per
 // entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
 // has) names its entries itself: its paths stay as given.

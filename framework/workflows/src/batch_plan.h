@@ -22,9 +22,6 @@ struct OutputPort {
     std::string node, port, original;
 };
 
-// Every node that depends on `source` through edges (source included).
-std::set<std::string> downstreamOf(const Graph& g, const std::string& source);
-
 // The Path parameters of the output nodes that run per entry, to rename per
 // entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
 // has) names its entries itself: its paths stay as given.

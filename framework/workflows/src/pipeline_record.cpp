@@ -11,19 +11,6 @@ namespace darkroom::workflows {
 
 namespace {
 
-// The nodes `sink` depends on through edges, by name (so in a stable order).
-std::set<std::string> upstreamOf(const Graph& g, const std::string& sink) {
-    std::set<std::string> seen;
-    std::vector<std::string> todo{sink};
-    while (!todo.empty()) {
-        const std::string at = todo.back();
-        todo.pop_back();
-        for (const Edge& e : g.edgesInto(at))
-            if (seen.insert(e.from.node).second) todo.push_back(e.from.node);
-    }
-    return seen;
-}
-
 bool isReader(const Graph& g, const Node& n) {
     const PortSpec* database = g.ports(n).input("database");
     return database && database->type == PortType::Path;
@@ -48,7 +35,9 @@ std::string digestOf(const Graph& g, const Node& n) {
 
 std::string upstreamPipeline(const Graph& g, const std::string& sink) {
     std::string out;
-    for (const std::string& name : upstreamOf(g, sink)) {
+    std::set<std::string> upstream = g.upstreamOf({sink});
+    upstream.erase(sink);
+    for (const std::string& name : upstream) {
         const Node* n = g.node(name);
         out += "node '" + n->name + "' (" + n->type + ")\t" + digestOf(g, *n) + "\n";
     }

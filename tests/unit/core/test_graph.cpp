@@ -48,6 +48,25 @@ TEST(Graph, RefusesCycles) {
     EXPECT_THROW(g.topologicalOrder(), Error);
 }
 
+TEST(Graph, WalksUpstreamAndDownstreamThroughEdgesOnly) {
+    // a -> b -> d, c -> d, e alone; a name with no node is ignored.
+    Graph g(testfilters::registry());
+    for (const char* n : {"a", "b", "c", "d", "e"}) g.addNode(n, "TestNoise");
+    g.addNode("sum", "TestAdd");
+    g.connect({"a", "image"}, {"b", "image"});
+    g.connect({"b", "image"}, {"sum", "a"});
+    g.connect({"c", "image"}, {"sum", "b"});
+    g.connect({"sum", "image"}, {"d", "image"});
+    using Names = std::set<std::string>;
+    EXPECT_EQ(g.upstreamOf({"d"}), (Names{"a", "b", "c", "d", "sum"}));
+    EXPECT_EQ(g.upstreamOf({"b", "e", "missing"}), (Names{"a", "b", "e"}));
+    EXPECT_EQ(g.downstreamOf({"a"}), (Names{"a", "b", "d", "sum"}));
+    EXPECT_EQ(g.downstreamOf({"c", "e"}), (Names{"c", "d", "e", "sum"}));
+    // A cycle that slipped in unchecked ends the walk rather than looping.
+    g.addEdgeUnchecked({{"d", "image"}, {"a", "image"}});
+    EXPECT_EQ(g.downstreamOf({"b"}), (Names{"a", "b", "d", "sum"}));
+}
+
 TEST(Graph, ValidateReportsMissingInputsAndUnknownTypes) {
     Graph g(testfilters::registry());
     g.addNode("add", "TestAdd");

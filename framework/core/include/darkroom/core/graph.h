@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -100,6 +101,13 @@ public:
     std::vector<std::string> topologicalOrder() const;
     // Nodes with no outputs (writers and other sinks), in insertion order.
     std::vector<std::string> sinks() const;
+    // The nodes `from` depend on through edges, the existing ones among
+    // `from` included; and the nodes that depend on `from`, `from` included.
+    // The one walk of the graph's edges for the evaluator, the workflows and
+    // the editor; with a stack of its own, since recursion would overflow the
+    // thread's stack on a chain of a million nodes.
+    std::set<std::string> upstreamOf(const std::vector<std::string>& from) const;
+    std::set<std::string> downstreamOf(const std::vector<std::string>& from) const;
 
     // Bumped by every structural or parameter change anywhere in the graph.
     std::uint64_t revision() const { return revision_; }
@@ -116,6 +124,9 @@ private:
     void resync();
     Node* handOut(std::size_t i);
     bool closesCycle(const std::string& from, const std::string& to) const;
+    using EdgeIndex = std::unordered_map<std::string, std::vector<std::size_t>>;
+    std::set<std::string> reachable(const std::vector<std::string>& from, const EdgeIndex& index,
+                                    bool downstream) const;
     const Registry* registry_;
     std::vector<Node> nodes_;
     std::vector<Edge> edges_;
