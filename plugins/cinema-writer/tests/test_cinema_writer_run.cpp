@@ -4,9 +4,9 @@
 // already holds (runs over MPI ranks: mpi/tests/cinema_writer_over_ranks_test.cpp).
 #include "../../../tests/integration/runner/runner_process.h"
 #include "test_support.h"
+#include "time_series_database.h"
 
 #include <darkroom/data/cinema/database.h>
-#include <darkroom/data/cinema/writer.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -36,12 +36,7 @@ edges:
 struct Shading {
     test::TempDir dir;
     Shading() {
-        CinemaWriter w(dir.file("source.cdb"), {"time"});
-        for (double t : {1.0, 2.0, 3.0})
-            w.addEntry({{"time", CinemaValue(t)}}, *test::makeImage(6, 4, {"Z", "value"}, [=](int, int, int) {
-                return float(t);
-            }));
-        w.finish();
+        test::writeTimeSeriesDatabase(dir.file("source.cdb"), {1.0, 2.0, 3.0});
         test::writeText(dir.file("shade.yaml"), kPipeline);
     }
     test::ProcessResult shade(std::vector<std::string> more = {}) const {

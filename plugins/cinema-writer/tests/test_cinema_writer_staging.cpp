@@ -4,9 +4,9 @@
 // staged file from outside its staging databases (S2).
 #include "../../../tests/integration/runner/runner_process.h"
 #include "test_support.h"
+#include "time_series_database.h"
 
 #include <darkroom/data/cinema/database.h>
-#include <darkroom/data/cinema/writer.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -37,11 +37,7 @@ struct Staging {
     std::string db = dir.file("out/shaded.cdb");
     std::string staging = db + ".staging";
     Staging() {
-        CinemaWriter w(dir.file("source.cdb"), {"time"});
-        for (double t : {1.0, 2.0})
-            w.addEntry({{"time", CinemaValue(t)}},
-                       *test::makeImage(6, 4, {"Z", "value"}, [=](int, int, int) { return float(t); }));
-        w.finish();
+        test::writeTimeSeriesDatabase(dir.file("source.cdb"), {1.0, 2.0});
         test::writeText(dir.file("shade.yaml"), kPipeline);
     }
     test::ProcessResult shade(std::vector<std::string> more = {}) const {

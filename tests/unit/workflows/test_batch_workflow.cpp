@@ -4,11 +4,11 @@
 // processes it is tested through mpirun: mpi/tests/foreach_over_ranks_test.cpp
 // and cinema_writer_over_ranks_test.cpp.)
 #include "test_support.h"
+#include "time_series_database.h"
 
 #include <darkroom/error.h>
 #include <darkroom/core/pipeline.h>
 #include <darkroom/data/cinema/database.h>
-#include <darkroom/data/cinema/writer.h>
 #include <darkroom/workflows/batch.h>
 #include <darkroom/workflows/pipeline_record.h>
 
@@ -41,12 +41,7 @@ struct Batch {
     Graph graph = loadShading();
     EvaluatorOptions options;
     Batch() {
-        CinemaWriter w(dir.file("source.cdb"), {"time"});
-        for (double t : {1.0, 2.0, 3.0})
-            w.addEntry({{"time", CinemaValue(t)}}, *test::makeImage(6, 4, {"Z", "value"}, [=](int, int, int) {
-                return float(t);
-            }));
-        w.finish();
+        test::writeTimeSeriesDatabase(dir.file("source.cdb"), {1.0, 2.0, 3.0});
         options.inputBase = dir.path();
         options.outputDir = dir.file("out");
         options.retainIntermediate = true;
