@@ -7,6 +7,8 @@
 #include <darkroom/filter.h>
 #include <darkroom/registrar.h>
 
+#include <filesystem>
+
 namespace darkroom {
 
 Filter::~Filter() = default;
@@ -40,5 +42,14 @@ std::string Context::get(const PathIn& p) const {
     const std::string& path = getString(p.name());
     return path.empty() ? path : resolveInputPath(path);
 }
+
+std::string Context::get(const OutputPathIn& p) const {
+    const std::string& path = getString(p.name());
+    if (path.empty()) throw Error("'" + p.name() + "' is empty; set the file or folder to write");
+    return std::filesystem::path(resolveOutputPath(path)).lexically_normal().string();
+}
+
+void Filter::beginSequence(const SequenceInfo&) {}
+void Filter::endSequence(const SequenceInfo&, bool) {}
 
 }  // namespace darkroom

@@ -111,6 +111,11 @@ PortSpec& PortList::pathIn(std::string name, std::string def, std::string doc) {
     p.defaultValue = std::move(def);
     return p;
 }
+PortSpec& PortList::outputPathIn(std::string name, std::string def, std::string doc) {
+    PortSpec& p = add(inputs, std::move(name), PortType::OutputPath, std::move(doc));
+    p.defaultValue = std::move(def);
+    return p;
+}
 PortSpec& PortList::imageOut(std::string name, std::string doc, std::vector<std::string> channels) {
     PortSpec& p = add(outputs, std::move(name), PortType::Image, std::move(doc));
     p.channels = std::move(channels);

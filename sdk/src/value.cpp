@@ -11,7 +11,7 @@ namespace darkroom {
 
 namespace {
 const char* const kTypeNames[] = {"image", "float", "int",    "bool",   "enum",
-                                  "color", "colormap", "vec3", "string", "path"};
+                                  "color", "colormap", "vec3", "string", "path", "outpath"};
 
 const char* heldName(const Value::Storage& s) {
     switch (s.index()) {
@@ -102,7 +102,7 @@ float srgbToLinear(float c) {
 const char* toString(PortType t) { return kTypeNames[static_cast<int>(t)]; }
 
 bool parsePortType(std::string_view name, PortType& out) {
-    for (int i = 0; i < 10; ++i)
+    for (int i = 0; i < int(std::size(kTypeNames)); ++i)
         if (name == kTypeNames[i]) {
             out = static_cast<PortType>(i);
             return true;

@@ -101,11 +101,12 @@ std::optional<EvalResult> EvalWorker::evaluate(const EvalJob& job) {
             r.error = QString::fromStdString(e.what());
             for (const auto& d : e.diagnostics())
                 if (!d.node.empty()) r.errorNodes << QString::fromStdString(d.node);
+        } catch (const darkroom::Error& e) {
+            r.error = QString::fromStdString(e.what());
+            if (!e.node().empty()) r.errorNodes << QString::fromStdString(e.node());  // the evaluator says which
+            if (r.error.isEmpty()) r.error = QStringLiteral("evaluation failed");
         } catch (const std::exception& e) {
             r.error = QString::fromStdString(e.what());
-            for (const auto& n : job.graph->nodes())
-                if (r.error.contains(QString::fromStdString("node '" + n.name + "'")))
-                    r.errorNodes << QString::fromStdString(n.name);
             if (r.error.isEmpty()) r.error = QStringLiteral("evaluation failed");
         }
         if (job.level == 0 && job.show && !invalid) {

@@ -111,12 +111,16 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
             if (line_->isModified()) emitText(line_->text());
             line_->setModified(false);
         });
-        if (port.type == T::Path) {
+        if (port.type == T::Path || port.type == T::OutputPath) {
             auto* b = new QPushButton(QStringLiteral("…"));
             b->setFixedWidth(24);
             lay->addWidget(b);
+            // What a node reads is opened; what it writes is saved (the
+            // dialog asks before naming an existing file).
             connect(b, &QPushButton::clicked, this, [this] {
-                const QString f = QFileDialog::getOpenFileName(this, QString::fromStdString(port_.name), baseFolder_);
+                const QString title = QString::fromStdString(port_.name);
+                const QString f = port_.type == T::Path ? QFileDialog::getOpenFileName(this, title, baseFolder_)
+                                                        : QFileDialog::getSaveFileName(this, title, baseFolder_);
                 if (!f.isEmpty()) emitText(f);
             });
         }

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <unordered_set>
+#include <utility>
 
 namespace darkroom {
 
@@ -45,6 +46,7 @@ struct Evaluator::NodeState {
     std::map<std::string, Value> outputs;
     std::map<std::string, OutputOrigin> origins;
     std::uint64_t lastUsed = 0;
+    bool begun = false;  // the filter's beginSequence was called in the open sequence
     // Statistics.
     std::uint64_t executions = 0;
     double seconds = 0;
@@ -144,7 +146,7 @@ Inputs gatherInputs(const Graph& g, const Node& n, const PortList& ports, const 
             const auto& up = *states.at(e.from.node);
             auto it = up.outputs.find(e.from.port);
             if (!up.valid || it == up.outputs.end())
-                throw Error(nodeLabel(n.name, n.type) + ": upstream " + e.from.str() + " produced nothing");
+                throw Error(nodeLabel(n.name, n.type) + ": upstream " + e.from.str() + " produced nothing", n.name);
             values.push_back(it->second);
         }
         if (values.empty() && in.type != PortType::Image)
@@ -259,10 +261,38 @@ std::vector<std::vector<std::string>> wavesOf(const Graph& g, const std::set<std
     return waves;
 }
 
+// Ends a filter's sequence; what it threw, as text ("" when nothing). A
+// filter's failure here must not stop the others from letting go.
+std::string endFilterSequence(Filter& filter, const SequenceInfo& info, bool completed) {
+    try {
+        filter.endSequence(info, completed);
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown error";
+    }
+    return "";
+}
+
+// States dropped (their node removed or retyped, the cache cleared) whose
+// filters began the open sequence are ended, as not completed, before they go.
+template <class State>
+void endRetired(std::vector<std::unique_ptr<State>>& retired, const SequenceInfo& info) {
+    for (auto& st : retired)
+        if (st && st->begun && st->filter) (void)endFilterSequence(*st->filter, info, false);
+    retired.clear();
+}
+
 }  // namespace
 
 Evaluator::Evaluator(EvaluatorOptions options) : options_(std::move(options)) {}
-Evaluator::~Evaluator() = default;
+
+Evaluator::~Evaluator() {
+    try {
+        endSequence(false);
+    } catch (...) {
+    }
+}
 
 void Evaluator::setOptions(EvaluatorOptions options) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -338,8 +368,83 @@ std::size_t Evaluator::cachedBytesLocked() const {
 }
 
 void Evaluator::clearCache() {
+    std::vector<std::unique_ptr<NodeState>> retired;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (auto& [name, st] : states_) retired.push_back(std::move(st));
+        states_.clear();
+    }
+    endRetired(retired, sequence_);
+}
+
+void Evaluator::beginSequence(SequenceInfo info) {
     std::lock_guard<std::mutex> lock(mutex_);
-    states_.clear();
+    if (sequenceOpen_) throw Error("a sequence is already open on this evaluator; sequences do not nest");
+    sequenceOpen_ = true;
+    sequence_ = info;
+}
+
+bool Evaluator::inSequence() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return sequenceOpen_;
+}
+
+void Evaluator::endSequence(bool completed) {
+    std::vector<std::pair<std::string, NodeState*>> begun;
+    SequenceInfo info;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!sequenceOpen_) return;
+        sequenceOpen_ = false;
+        info = sequence_;
+        for (auto& [name, st] : states_)
+            if (st->begun) {
+                st->begun = false;
+                begun.emplace_back(name, st.get());
+            }
+    }
+    std::string firstFailure, failedNode;
+    for (auto& [name, st] : begun) {
+        const std::string failure = endFilterSequence(*st->filter, info, completed);
+        if (!failedNode.empty() || failure.empty()) continue;
+        firstFailure = nodeLabel(name, st->filterType) + ": " + failure;
+        failedNode = name;
+    }
+    if (!failedNode.empty()) throw Error(firstFailure, failedNode);
+}
+
+void Evaluator::beginSequenceOf(const Node& n, NodeState& st) {
+    SequenceInfo info;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (st.begun || !sequenceOpen_) return;
+        info = sequence_;
+    }
+    try {
+        st.filter->beginSequence(info);
+    } catch (const std::exception& e) {
+        throw Error(nodeLabel(n.name, n.type) + ": " + e.what(), n.name);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    st.begun = true;
+}
+
+EvaluatorSequence::EvaluatorSequence(Evaluator& evaluator, SequenceInfo info) : evaluator_(&evaluator) {
+    evaluator.beginSequence(info);
+}
+
+EvaluatorSequence::~EvaluatorSequence() {
+    if (!evaluator_) return;
+    try {
+        evaluator_->endSequence(false);
+    } catch (...) {
+        // Already failing (or cancelled): the first failure is the one reported.
+    }
+}
+
+void EvaluatorSequence::end() {
+    Evaluator* e = std::exchange(evaluator_, nullptr);
+    if (e) e->endSequence(true);
 }
 
 Value Evaluator::evaluate(const Graph& graph, const std::string& node, const std::string& port,
@@ -367,7 +472,16 @@ void Evaluator::run(const Graph& graph, std::vector<std::string> nodes, const st
     ensure(graph, nodes, cancel);
 }
 
-void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* external) {
+void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* cancel) {
+    if (inSequence()) return evaluateWaves(g, targets, cancel);
+    // A sequence of its own, so no filter holds anything once this returns.
+    EvaluatorSequence sequence(*this);
+    evaluateWaves(g, targets, cancel);
+    sequence.end();
+}
+
+void Evaluator::evaluateWaves(const Graph& g, const std::vector<std::string>& targets,
+                              const std::atomic<bool>* external) {
     // The internal flag is cleared when a run ends, not when one starts, so a
     // cancel() that arrives before the run starts still cancels it.
     struct ClearOnExit {
@@ -383,21 +497,25 @@ void Evaluator::ensure(const Graph& g, const std::vector<std::string>& targets, 
     // Outputs still to be read in this evaluation, for retainIntermediate = false.
     std::map<std::string, int> pendingReaders;
     const std::vector<std::vector<std::string>> waves = wavesOf(g, needed, pendingReaders);
+    std::vector<std::unique_ptr<NodeState>> retired;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         // States of nodes that were removed, renamed or retyped are freed.
         for (auto it = states_.begin(); it != states_.end();) {
             const Node* n = g.node(it->first);
-            if (!n || n->placeholder || (it->second->filter && it->second->filterType != n->type))
+            if (!n || n->placeholder || (it->second->filter && it->second->filterType != n->type)) {
+                retired.push_back(std::move(it->second));
                 it = states_.erase(it);
-            else
+            } else {
                 ++it;
+            }
         }
         ++clock_;
         profile_.clear();
         for (const auto& n : needed)
             if (auto& st = states_[n]; !st) st = std::make_unique<NodeState>();
     }
+    endRetired(retired, sequence_);
     const std::set<std::string> targetSet(targets.begin(), targets.end());
 
     Progress progress;
@@ -519,6 +637,7 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
             st.valid = false;
             st.outputs.clear();
         }
+        beginSequenceOf(n, st);
         NodeResult r = runNode(call);
         keepUnchangedOutputs(r, previous);
         profile.status = NodeProfile::Status::Ran;

@@ -58,9 +58,10 @@ bool compatible(PortType from, PortType to) {
     if (from == to) return true;
     if (from == PortType::Int && to == PortType::Float) return true;
     auto stringy = [](PortType t) {
-        return t == PortType::String || t == PortType::Path || t == PortType::Enum || t == PortType::ColorMap;
+        return t == PortType::String || t == PortType::Path || t == PortType::OutputPath || t == PortType::Enum ||
+               t == PortType::ColorMap;
     };
-    return stringy(from) && (to == PortType::String || to == PortType::Path);
+    return stringy(from) && (to == PortType::String || to == PortType::Path || to == PortType::OutputPath);
 }
 
 Graph::Graph(const Registry& registry) : registry_(&registry) {}

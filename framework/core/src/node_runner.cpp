@@ -105,7 +105,7 @@ std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, co
     std::map<std::string, std::vector<Value>> out;
     for (const auto& [name, values] : call.inputs) {
         const PortSpec* in = call.ports->input(name);
-        if (!in) throw Error(label + ": has no input '" + name + "'");
+        if (!in) throw Error(label + ": has no input '" + name + "'", call.name);
         std::vector<Value> vs;
         for (const auto& v : values) {
             Value x = v;
@@ -113,16 +113,16 @@ std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, co
                 x = Value(x.asFloat());
             if (in->type == PortType::Image) {
                 const BufferPtr& b = x.asImage();
-                if (!b) throw Error(label + ": input '" + in->name + "' received no image");
+                if (!b) throw Error(label + ": input '" + in->name + "' received no image", call.name);
                 for (const auto& c : in->channels)
                     if (!b->hasChannel(c))
                         throw Error(label + ": input '" + in->name + "' needs channel '" + c + "', but the image has " +
-                                    channelListText(*b));
+                                    channelListText(*b), call.name);
             } else {
                 try {
                     checkValue(*in, x);
                 } catch (const Error& e) {
-                    throw Error(label + ": " + e.what());
+                    throw Error(label + ": " + e.what(), call.name);
                 }
             }
             vs.push_back(std::move(x));
@@ -131,7 +131,7 @@ std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, co
     }
     for (const auto& in : call.ports->inputs)
         if (in.type == PortType::Image && !in.optional && !in.multiple && !out.count(in.name))
-            throw Error(label + ": input '" + in.name + "' is not connected");
+            throw Error(label + ": input '" + in.name + "' is not connected", call.name);
     return out;
 }
 
@@ -141,7 +141,7 @@ void executeGuarded(const NodeCall& call, HostContext& ctx, const std::string& l
     auto overTime = [&] {
         char seconds[32];
         std::snprintf(seconds, sizeof seconds, "%g", double(limit(Limit::NodeMilliseconds)) / 1000.0);
-        return InputError(label + ": ran past " + limitOption(Limit::NodeMilliseconds) + " " + seconds);
+        return InputError(label + ": ran past " + limitOption(Limit::NodeMilliseconds) + " " + seconds, call.name);
     };
     try {
         call.filter->execute(ctx);
@@ -151,20 +151,22 @@ void executeGuarded(const NodeCall& call, HostContext& ctx, const std::string& l
     } catch (const InputError& e) {
         // Bad input the node found (a missing file, a size over a limit): the
         // runner exits 2 for it, as for a bad pipeline.
-        throw InputError(label + ": " + e.what());
+        throw InputError(label + ": " + e.what(), call.name);
     } catch (const Error& e) {
-        throw Error(label + ": " + e.what());
+        throw Error(label + ": " + e.what(), call.name);
     } catch (const std::bad_alloc&) {
         throw Error(label + ": ran out of memory (" + limitOption(Limit::NodeBytes) +
-                    " fails such a node before it takes the machine's memory)");
+                    " fails such a node before it takes the machine's memory)",
+                    call.name);
     } catch (const std::logic_error& e) {
         // A programming error in the node or a library it calls
         // (std::out_of_range: "map::at"): named as such, not shown bare.
-        throw Error(label + ": unexpected failure inside the node (a bug; please report it): " + e.what());
+        throw Error(label + ": unexpected failure inside the node (a bug; please report it): " + e.what(),
+                    call.name);
     } catch (const std::exception& e) {
-        throw Error(label + ": " + e.what());
+        throw Error(label + ": " + e.what(), call.name);
     } catch (...) {
-        throw Error(label + ": failed with an unknown exception");
+        throw Error(label + ": failed with an unknown exception", call.name);
     }
     if (ctx.overTime()) throw overTime();
     if (ctx.cancelled()) throw Cancelled();
@@ -239,21 +241,24 @@ void recordReads(const HostContext& ctx, NodeResult& r) {
     }
 }
 
-// The files the node depends on: those it said it read and every Path (and
-// file colour map) input, stamped.
-void recordFiles(const HostContext& ctx, const PortList& ports, const std::string& inputBase, NodeResult& r) {
+// The files the node depends on: those it said it read, every Path (and
+// file colour map) input, and what it wrote through an OutputPath, stamped
+// after it ran: a written file changed or deleted since makes it run again.
+void recordFiles(const HostContext& ctx, const NodeCall& call, NodeResult& r) {
     r.inputs = ctx.inputsRead();
     std::vector<std::string> files = ctx.filesRead();
-    for (const auto& in : ports.inputs) {
-        const bool file = in.type == PortType::Path ||
+    for (const auto& in : call.ports->inputs) {
+        const bool output = in.type == PortType::OutputPath;
+        const bool file = output || in.type == PortType::Path ||
                           (in.type == PortType::ColorMap && !isColorMapPreset(ctx.value(in.name).asString()));
         if (!file) continue;
         const fs::path path(ctx.value(in.name).asString());
         if (path.empty()) continue;
-        // Resolved as HostContext::resolveInputPath does, without recording
-        // it as read: an output path is stamped too, but is no input.
-        files.push_back(path.is_absolute() || inputBase.empty() ? path.string()
-                                                                : (fs::path(inputBase) / path).lexically_normal().string());
+        // Resolved as HostContext's resolveInputPath and resolveOutputPath
+        // do, without recording an input as read.
+        const std::string& base = output && !call.outputDir.empty() ? call.outputDir : call.inputBase;
+        files.push_back(path.is_absolute() || base.empty() ? path.string()
+                                                           : (fs::path(base) / path).lexically_normal().string());
     }
     for (const auto& f : files) r.files.push_back(stampOf(f));
 }
@@ -286,10 +291,10 @@ NodeResult runNode(const NodeCall& call) {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.bytesAllocated = ctx.bytesAllocated();
     for (const auto& out : call.ports->outputs)
-        if (!ctx.outputs().count(out.name)) throw Error(label + " did not produce its output '" + out.name + "'");
+        if (!ctx.outputs().count(out.name)) throw Error(label + " did not produce its output '" + out.name + "'", call.name);
     recordOutputs(ctx, r);
     recordReads(ctx, r);
-    recordFiles(ctx, *call.ports, call.inputBase, r);
+    recordFiles(ctx, call, r);
     return r;
 }
 

@@ -84,7 +84,19 @@ FilterRunResult runFilter(Filter& filter, const std::map<std::string, std::vecto
     if (options.poison) PlanePool::shared().setPoison(true);
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     NodeResult r;
-    arena.execute([&] { r = runNode(call); });
+    const SequenceInfo one{1};
+    filter.beginSequence(one);
+    try {
+        arena.execute([&] { r = runNode(call); });
+    } catch (...) {
+        try {
+            filter.endSequence(one, false);
+        } catch (...) {
+            // The execute's failure is the one reported.
+        }
+        throw;
+    }
+    filter.endSequence(one, true);
     result.outputs = std::move(r.outputs);
     return result;
 }

@@ -172,7 +172,7 @@ std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Pl
         } catch (const GraphError&) {
             failure = std::current_exception();
         } catch (const Error& e) {
-            failure = std::make_exception_ptr(Error("entry " + entry + ": " + e.what()));
+            failure = std::make_exception_ptr(Error("entry " + entry + ": " + e.what(), e.node()));
         }
         if (failure) {
             queue->failed();
@@ -180,6 +180,24 @@ std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Pl
         }
         records += std::to_string(position) + "\n";
         queue->finished();
+    }
+    return records;
+}
+
+// The entries this process shades, as one sequence of the evaluator: a
+// CinemaWriter keeps its database open across them and lets it go (data.csv
+// written a last time, the lock removed) as the sequence ends — before the
+// lead reads the staging databases. A failure to let go fails the batch.
+std::string shadeInSequence(Graph& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
+                            const std::vector<std::size_t>& todo, ProcessGroup& group, const BatchCallbacks& cb,
+                            std::exception_ptr& failure) {
+    EvaluatorSequence sequence(ev, SequenceInfo{group.size() == 1 ? todo.size() : 0});
+    std::string records = shadeShare(g, ev, s, p, todo, group, cb, failure);
+    if (failure) return records;  // the sequence ends as not completed
+    try {
+        sequence.end();
+    } catch (const Error&) {
+        failure = std::current_exception();
     }
     return records;
 }
@@ -256,7 +274,7 @@ void runFinalSinks(Evaluator& ev, const Plan& p, ProcessGroup& group, const Batc
     } catch (const GraphError&) {
         failure = std::current_exception();
     } catch (const Error& e) {
-        failure = std::make_exception_ptr(Error(std::string("after the last entry: ") + e.what()));
+        failure = std::make_exception_ptr(Error(std::string("after the last entry: ") + e.what(), e.node()));
     }
 }
 
@@ -277,16 +295,13 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
     // staging database of its own; the lead adopts them all at the end.
     for (const auto& d : p.databases) {
         if (!p.staging) break;
-        graph.setParameter(d.node, "database", Value(stagingDatabase(d, group.rank())));
+        graph.setParameter(d.node, d.port, Value(stagingDatabase(d, group.rank())));
         graph.setParameter(d.node, "mode", Value(std::string("overwrite")));
     }
     BatchSummary summary;
     summary.selected = p.rows.size();
     summary.kept = p.rows.size() - todo.size();
-    const std::string records = shadeShare(graph, evaluator, settings, p, todo, group, cb, summary.failure);
-    // The writers release their staging databases (data.csv written a last
-    // time, lock removed) before the lead reads them.
-    if (p.staging) evaluator.clearCache();
+    const std::string records = shadeInSequence(graph, evaluator, settings, p, todo, group, cb, summary.failure);
     bool anyFailed = false;
     const std::vector<std::string> all = gatherRecords(records, bool(summary.failure), group, anyFailed);
     summary.failedElsewhere = anyFailed && !summary.failure;

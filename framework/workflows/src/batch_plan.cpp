@@ -22,8 +22,8 @@ std::string perEntryPath(const std::string& path, const std::string& entry) {
     return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
 }
 
-// The Path parameters of the output nodes that run per entry, to rename per
-// entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
+// The output paths (PortType::OutputPath) of the sinks that run per entry,
+// to rename per entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
 // has) names its entries itself: its paths stay as given.
 std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks) {
     std::vector<OutputPort> out;
@@ -31,7 +31,7 @@ std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::strin
         const Node* n = g.node(name);
         if (g.ports(*n).input("row") && !g.edgesInto(name, "row").empty()) continue;
         for (const auto& p : g.ports(*n).inputs) {
-            if (p.type != PortType::Path) continue;
+            if (p.type != PortType::OutputPath) continue;
             const Value* v = n->parameter(p.name);
             const std::string original = v ? v->asString() : p.defaultValue.asString();
             if (!original.empty()) out.push_back({name, p.name, original});

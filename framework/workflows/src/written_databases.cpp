@@ -40,13 +40,18 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
     std::vector<DatabaseSink> out;
     for (const auto& name : sinks) {
         const Node* n = g.node(name);
-        const PortSpec* database = g.ports(*n).input("database");
-        if (!g.ports(*n).input("row") || g.edgesInto(name, "row").empty() || !database ||
-            database->type != PortType::Path)
-            continue;
-        DatabaseSink sink{name, n->type, valueOf(g, *n, "database"), valueOf(g, *n, "mode"), valueOf(g, *n, "format"),
+        const auto& inputs = g.ports(*n).inputs;
+        const auto database = std::find_if(inputs.begin(), inputs.end(),
+                                           [](const PortSpec& p) { return p.type == PortType::OutputPath; });
+        if (!g.ports(*n).input("row") || g.edgesInto(name, "row").empty() || database == inputs.end()) continue;
+        DatabaseSink sink{name,
+                          n->type,
+                          database->name,
+                          valueOf(g, *n, database->name),
+                          valueOf(g, *n, "mode"),
+                          valueOf(g, *n, "format"),
                           g.ports(*n).input("pipeline") ? valueOf(g, *n, "pipeline") : std::string()};
-        if (!g.edgesInto(name, "database").empty()) {
+        if (!g.edgesInto(name, database->name).empty()) {
             if (!overRanks) continue;
             throw Error(label(sink) + ": its database comes through an edge; under mpirun give it as a "
                                       "parameter, so that the runner can stage each rank's entries");

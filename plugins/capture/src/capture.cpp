@@ -1,27 +1,11 @@
 #include "capture.h"
 
 #include <darkroom/error.h>
+#include <darkroom/strings.h>
 #include <darkroom/scene/scene_file.h>
 
-#include <sstream>
 
 namespace darkroom {
-
-namespace {
-
-// "a, b ,c" -> {"a", "b", "c"}; empty items are dropped.
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-        if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
-    }
-    return out;
-}
-
-}  // namespace
 
 struct Capture::Cache {
     std::string path;

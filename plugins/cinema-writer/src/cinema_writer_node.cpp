@@ -1,6 +1,7 @@
 #include "cinema_writer_node.h"
 
 #include <darkroom/error.h>
+#include <darkroom/strings.h>
 #include <darkroom/data/cinema/row.h>
 #include <darkroom/data/cinema/csv.h>
 #include <darkroom/data/cinema/pipeline_origin.h>
@@ -11,7 +12,9 @@
 
 namespace darkroom {
 
-struct CinemaWriterNode::Open {
+// What a database is written with; another value of any of them (the
+// columns aside, which must match) starts another database.
+struct CinemaWriterNode::Settings {
     std::string path;
     std::vector<std::string> columns;
     Format format;
@@ -19,24 +22,33 @@ struct CinemaWriterNode::Open {
     std::string compression;
     std::vector<std::string> channels;
     std::string pipeline;
-    std::unique_ptr<CinemaWriter> writer;
-    std::set<std::string> writtenThisRun;  // product file names
+    bool sameDatabase(const Settings& o) const {
+        return path == o.path && format == o.format && mode == o.mode && compression == o.compression &&
+               channels == o.channels && pipeline == o.pipeline;
+    }
 };
 
 namespace {
 
-std::vector<std::string> splitChannels(const std::string& text) {
-    std::vector<std::string> out;
-    std::string word;
-    for (char c : text + ",") {
-        if (c == ',' || c == ' ' || c == '\t') {
-            if (!word.empty()) out.push_back(word);
-            word.clear();
-        } else {
-            word += c;
-        }
-    }
-    return out;
+CinemaWriterOptions writerOptions(const CinemaWriterNode::Settings& s, bool again) {
+    using Format = CinemaWriterNode::Format;
+    using Mode = CinemaWriterNode::Mode;
+    CinemaWriterOptions o;
+    // A database this node wrote in an earlier sequence (the editor's
+    // previous evaluation) is added to, whatever the mode: not refused as
+    // existing, not replaced.
+    o.overwrite = s.mode == Mode::Overwrite && !again;
+    o.resume = s.mode == Mode::Resume || again;
+    o.productExtension = s.format == Format::Png ? ".png" : ".exr";
+    o.image.compression = s.compression;
+    o.image.channels = s.channels;
+    // A resume refuses a database these settings did not write (the product
+    // format the writer records itself).
+    const std::string channelList = join(s.channels, ",");
+    o.origin.push_back({"the CinemaWriter settings", "channels", channelList.empty() ? "default" : channelList});
+    if (s.format == Format::Exr) o.origin.push_back({"the CinemaWriter settings", "compression", s.compression});
+    for (auto& item : pipelineOriginItems(s.pipeline)) o.origin.push_back(std::move(item));
+    return o;
 }
 
 }  // namespace
@@ -44,15 +56,23 @@ std::vector<std::string> splitChannels(const std::string& text) {
 CinemaWriterNode::CinemaWriterNode() = default;
 
 CinemaWriterNode::~CinemaWriterNode() {
-    // data.csv is complete after every entry; finishing only rewrites it and
-    // removes the lock file. A failure here leaves a valid database with a
-    // stale lock, which the next writer takes over.
-    if (open_ && open_->writer) {
-        try {
-            open_->writer->finish();
-        } catch (...) {
-        }
+    // Only a host that never ended the sequence leaves a database open. It
+    // is complete after every entry; finishing rewrites data.csv and removes
+    // the lock file. A failure here leaves a valid database with a stale
+    // lock, which the next writer takes over.
+    try {
+        endSequence({}, false);
+    } catch (...) {
     }
+}
+
+void CinemaWriterNode::endSequence(const SequenceInfo&, bool) {
+    std::unique_ptr<CinemaWriter> writer;
+    {
+        std::lock_guard<std::mutex> g(mutex_);
+        writer = std::move(writer_);
+    }
+    if (writer) writer->finish();
 }
 
 void CinemaWriterNode::execute(Context& ctx) {
@@ -71,61 +91,44 @@ void CinemaWriterNode::execute(Context& ctx) {
     if (columns.empty())
         throw Error("the row '" + rowText + "' has no parameter columns (only FILE columns), so entries could not "
                     "be told apart");
-    const std::string& given = ctx.getString(database_.name());
-    if (given.empty()) throw Error("no database given; set 'database' to the folder to write, e.g. shaded.cdb");
-    const std::string path = std::filesystem::path(ctx.resolveOutputPath(given)).lexically_normal().string();
+    if (ctx.getString(database_.name()).empty())
+        throw Error("no database given; set 'database' to the folder to write, e.g. shaded.cdb");
+    const std::string path = ctx.get(database_);
     const Format format = ctx.get(format_);
     const Mode mode = ctx.get(mode_);
     const std::string compression = ctx.get(compression_);
 
-    const std::vector<std::string> channels = splitChannels(ctx.get(channels_));
+    const std::vector<std::string> channels = splitNames(ctx.get(channels_));
     const std::string& pipeline = ctx.get(pipeline_);
 
+    Settings want{path, columns, format, mode, compression, channels, pipeline};
     std::lock_guard<std::mutex> g(mutex_);
-    const bool reuse = open_ && open_->path == path && open_->format == format && open_->mode == mode &&
-                       open_->compression == compression && open_->channels == channels &&
-                       open_->pipeline == pipeline;
-    if (reuse && open_->columns != columns) {
-        std::string have, want;
-        for (const auto& c : open_->columns) have += (have.empty() ? "" : ", ") + c;
-        for (const auto& c : columns) want += (want.empty() ? "" : ", ") + c;
-        throw Error("this row has the columns " + want + " but the database " + path + " was started with " + have +
-                    "; write each database from rows of one kind");
+    const bool same = last_ && last_->sameDatabase(want);
+    if (same && last_->columns != columns)
+        throw Error("this row has the columns " + join(columns, ", ") + " but the database " + path +
+                    " was started with " + join(last_->columns, ", ") + "; write each database from rows of one kind");
+    if (!same) {
+        if (writer_) writer_->finish();
+        writer_.reset();
+        written_.clear();
     }
-    if (!reuse) {
-        if (open_ && open_->writer) open_->writer->finish();
-        open_.reset();
-        CinemaWriterOptions o;
-        o.overwrite = mode == Mode::Overwrite;
-        o.resume = mode == Mode::Resume;
-        o.productExtension = format == Format::Png ? ".png" : ".exr";
-        o.image.compression = compression;
-        o.image.channels = channels;
-        // A resume refuses a database these settings did not write (the
-        // product format the writer records itself).
-        std::string channelList;
-        for (const auto& c : channels) channelList += (channelList.empty() ? "" : ",") + c;
-        o.origin.push_back({"the CinemaWriter settings", "channels", channelList.empty() ? "default" : channelList});
-        if (format == Format::Exr) o.origin.push_back({"the CinemaWriter settings", "compression", compression});
-        for (auto& item : pipelineOriginItems(pipeline)) o.origin.push_back(std::move(item));
+    if (!writer_) {
         std::error_code ec;
         const auto parent = std::filesystem::path(path).parent_path();
         if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-        auto next = std::make_unique<Open>();
-        *next = Open{path, columns, format, mode, compression, channels, pipeline, nullptr, {}};
-        next->writer = std::make_unique<CinemaWriter>(path, columns, o);
-        open_ = std::move(next);
+        writer_ = std::make_unique<CinemaWriter>(path, columns, writerOptions(want, same && !written_.empty()));
     }
+    last_ = std::make_unique<Settings>(std::move(want));
     // A resumed database keeps the entries it has (written by an earlier,
-    // interrupted run); an entry written earlier in this run is replaced (the
-    // editor re-evaluating after an edit).
-    const std::string file = open_->writer->entryFileName(params);
-    if (mode == Mode::Resume && open_->writer->hasEntry(params) && !open_->writtenThisRun.count(file)) {
+    // interrupted run); an entry this node wrote is replaced (the editor
+    // re-evaluating after an edit).
+    const std::string file = writer_->entryFileName(params);
+    if (mode == Mode::Resume && writer_->hasEntry(params) && !written_.count(file)) {
         ctx.progress(1.0);
         return;
     }
-    open_->writer->addEntry(params, *image);
-    open_->writtenThisRun.insert(file);
+    writer_->addEntry(params, *image);
+    written_.insert(file);
     ctx.progress(1.0);
 }
 

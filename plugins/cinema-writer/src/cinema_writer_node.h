@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ class CinemaWriterNode final : public Filter {
 public:
     enum class Format { Png, Exr };
     enum class Mode { Create, Overwrite, Resume };
+    struct Settings;
 
     CinemaWriterNode();
     ~CinemaWriterNode() override;
@@ -25,13 +27,18 @@ public:
         return {image_, row_, database_, format_, channels_, compression_, mode_, pipeline_};
     }
     void execute(Context& ctx) override;
+    // The database is opened (and locked) at the first entry of a sequence
+    // and finished (data.csv written a last time, the lock removed) when the
+    // sequence ends: a --foreach run writes one database, and between the
+    // editor's evaluations nothing is held.
+    void endSequence(const SequenceInfo& info, bool completed) override;
 
 private:
     ImageIn image_{"image", "What to store: colour (PNG) or any channels (EXR)"};
     StringIn row_{"row", "",
                   "The entry's parameters: connect CinemaReader's row (its parameter columns become this "
                   "database's columns; its FILE columns are not copied), or type 'time=0.5, phi=30'"};
-    PathIn database_{"database", "",
+    OutputPathIn database_{"database", "",
                      "The database folder to write (name.cdb), relative to the output folder (--output) or the "
                      "pipeline's"};
     EnumIn<Format> format_{"format",
@@ -58,10 +65,14 @@ private:
                        "another pipeline wrote: one line per node upstream, 'node<TAB>digest'. darkroom run sets "
                        "it (docs/publishing.md); empty: nothing recorded"};
 
-    // The open database, kept (and locked) from the first entry of a run to
-    // the node's end, so a --foreach run writes one database.
-    struct Open;
-    std::unique_ptr<Open> open_;
+    // The open database (and its lock), inside a sequence only.
+    std::unique_ptr<CinemaWriter> writer_;
+    // What the node wrote last, and the product files it wrote there, kept
+    // over sequences: the next sequence with the same settings adds to that
+    // database (the editor evaluating entry after entry), and an entry this
+    // node wrote is replaced even in mode resume (an edit re-evaluated).
+    std::unique_ptr<Settings> last_;
+    std::set<std::string> written_;
     std::mutex mutex_;
 };
 

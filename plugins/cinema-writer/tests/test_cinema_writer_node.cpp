@@ -15,7 +15,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
+
+#include <sys/stat.h>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -49,13 +53,18 @@ struct Pipeline {
         graph.connect({"read", "image"}, {"write", "image"});
         graph.connect({"read", "row"}, {"write", "row"});
     }
-    // What `darkroom run --foreach read` does: one evaluation per source row.
-    void foreachRow(Evaluator& ev, const std::string& source, std::size_t limit = 1000) {
+    // What `darkroom run --foreach` does: one evaluation per source row, all
+    // in one sequence; `beforeTheEnd` looks at the files before it ends.
+    void foreachRow(Evaluator& ev, const std::string& source, std::size_t limit = 1000,
+                    const std::function<void()>& beforeTheEnd = {}) {
         const auto db = CinemaDatabase::open(source);
+        EvaluatorSequence sequence(ev, SequenceInfo{std::min(limit, db.rowCount())});
         for (std::size_t r = 0; r < db.rowCount() && r < limit; ++r) {
             graph.setParameter("read", "parameters", Value(db.formatParameters(r)));
             ev.run(graph);
         }
+        if (beforeTheEnd) beforeTheEnd();
+        sequence.end();
     }
 };
 
@@ -66,11 +75,10 @@ TEST(CinemaWriterNode, ShadesADatabaseIntoANewOneWithTheSameEntries) {
     const std::string source = sourceDatabase(dir);
     for (const std::string format : {"png", "exr"}) {
         const std::string target = dir.file("shaded-" + format + ".cdb");
-        {
-            Pipeline p(source, target, format);
-            Evaluator ev;
-            p.foreachRow(ev, source);
-            // Locked while the run holds it.
+        Pipeline p(source, target, format);
+        Evaluator ev;
+        p.foreachRow(ev, source, 1000, [&] {
+            // Locked while the sequence holds it.
             EXPECT_TRUE(fs::exists(target + "/.lock"));
             try {
                 CinemaWriter intruder(target, {"time", "phi"}, CinemaWriterOptions{false, true, {}, ".png", {}, {}});
@@ -78,7 +86,9 @@ TEST(CinemaWriterNode, ShadesADatabaseIntoANewOneWithTheSameEntries) {
             } catch (const Error& e) {
                 EXPECT_THAT(e.what(), HasSubstr("being written by another process"));
             }
-        }  // the node ends: lock released
+        });
+        // The sequence ended: the lock is released though the node and its
+        // evaluator live on (the editor, idle).
         EXPECT_FALSE(fs::exists(target + "/.lock"));
         const auto in = CinemaDatabase::open(source);
         const auto out = CinemaDatabase::open(target);
@@ -159,6 +169,53 @@ TEST(CinemaWriterNode, ErrorsAreClear) {
     EXPECT_THAT(message({{"row", {Value("FILE=x.png")}}, {"database", {Value(dir.file("b.cdb"))}}}),
                 HasSubstr("has no parameter columns"));
     EXPECT_EQ(message({{"row", {Value("phi=1")}}, {"database", {Value(dir.file("c.cdb"))}}}), "no error");
-    EXPECT_THAT(message({{"row", {Value("theta=1")}}, {"database", {Value(dir.file("c.cdb"))}}}),
-                HasSubstr("was started with phi"));
+}
+
+TEST(CinemaWriterNode, RowsOfAnotherKindAreRefusedWithinASequence) {
+    test::TempDir dir;
+    Pipeline p(sourceDatabase(dir), dir.file("c.cdb"), "png");
+    p.graph.disconnect({"read", "row"}, {"write", "row"});
+    Evaluator ev;
+    EvaluatorSequence sequence(ev);
+    p.graph.setParameter("write", "row", Value("phi=1"));
+    ev.run(p.graph);
+    p.graph.setParameter("write", "row", Value("theta=1"));
+    try {
+        ev.run(p.graph);
+        ADD_FAILURE() << "a row with other columns was written into the database";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("the columns theta but the database " + dir.file("c.cdb") +
+                                            " was started with phi"));
+    }
+}
+
+TEST(CinemaWriterNode, BetweenEvaluationsOutsideASequenceNoLockIsHeld) {
+    // The editor evaluates without a sequence of its own: each evaluation is
+    // one. After an edit the entry this node wrote is written again, even in
+    // mode resume (which keeps only what earlier runs wrote).
+    test::TempDir dir;
+    const std::string source = sourceDatabase(dir), target = dir.file("shaded.cdb");
+    Pipeline p(source, target, "png");
+    p.graph.setParameter("write", "mode", Value("resume"));
+    p.graph.setParameter("read", "parameters", Value(CinemaDatabase::open(source).formatParameters(0)));
+    p.graph.addNode("resize", "Resize");
+    p.graph.disconnect({"read", "image"}, {"write", "image"});
+    p.graph.connect({"read", "image"}, {"resize", "image"});
+    p.graph.connect({"resize", "image"}, {"write", "image"});
+    Evaluator ev;
+    ev.run(p.graph);
+    EXPECT_FALSE(fs::exists(target + "/.lock"));
+    const auto db = CinemaDatabase::open(target);
+    ASSERT_EQ(db.rowCount(), 1u);
+    const std::string product = db.productPath(0);
+    struct stat first {};
+    ASSERT_EQ(::stat(product.c_str(), &first), 0);
+    p.graph.setParameter("resize", "scale", Value(2.0));  // an edit upstream: the writer runs again
+    ev.run(p.graph);
+    EXPECT_FALSE(fs::exists(target + "/.lock"));
+    ASSERT_EQ(ev.executions("write"), 2u);
+    struct stat second {};
+    ASSERT_EQ(::stat(product.c_str(), &second), 0);
+    EXPECT_NE(first.st_ino, second.st_ino) << "the entry was kept, not written again";
+    EXPECT_EQ(CinemaDatabase::open(target).rowCount(), 1u);
 }

@@ -23,8 +23,7 @@ private:
     }
 
     ImageIn image_{"image", "Image to write"};
-    // An output path: resolved against --output, not the pipeline's folder.
-    PathIn path_{"path", "",
+    OutputPathIn path_{"path", "",
                  "Output file; the extension picks the format (.exr keeps every channel exactly; "
                  ".png, .jpg, .tif are 8-bit sRGB). Relative to --output or the pipeline file"};
     EnumIn<std::string> compression_{"compression", compressions(), "zip",

@@ -45,6 +45,7 @@ TEST(ImageIoPlugin, RegistersReaderAndWriter) {
     ASSERT_NE(r.filter("ImageWriter"), nullptr);
     EXPECT_EQ(r.ports("ImageWriter").outputs.size(), 0u) << "a sink";
     EXPECT_EQ(r.ports("ImageReader").input("path")->type, PortType::Path);
+    EXPECT_EQ(r.ports("ImageWriter").input("path")->type, PortType::OutputPath) << "found by kind by the batch";
     EXPECT_EQ(r.ports("ImageWriter").input("compression")->type, PortType::Enum);
 }
 

@@ -8,6 +8,7 @@
 #include <darkroom/data/cinema/database.h>
 #include <darkroom/data/cinema/product.h>
 #include <darkroom/srgb.h>
+#include <darkroom/strings.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,21 +20,6 @@ namespace darkroom {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::string word;
-    for (char c : text + ",") {
-        if (c == ',') {
-            while (!word.empty() && word.back() == ' ') word.pop_back();
-            if (!word.empty()) out.push_back(word);
-            word.clear();
-        } else if (!(c == ' ' && word.empty())) {
-            word += c;
-        }
-    }
-    return out;
-}
 
 // Rows in frame order: by the given columns, numbers ascending (NaN last),
 // text in byte order; ties keep database order.
@@ -108,9 +94,8 @@ void Movie::execute(Context& ctx) {
         throw Error("no entry of " + db.path() + (ctx.get(where_).empty() ? "" : " satisfies '" + ctx.get(where_) + "'") +
                     "; a movie needs at least one frame");
     std::vector<std::size_t> order;
-    const std::vector<std::string> names = splitList(ctx.get(orderBy_));
-    if (names.empty()) order = db.parameterColumns();
-    for (const auto& n : names) order.push_back(db.column(n));
+    for (const std::string& name : splitList(ctx.get(orderBy_))) order.push_back(db.column(name));
+    if (order.empty()) order = db.parameterColumns();
     rows = frameOrder(db, rows, order);
 
     const std::string file = ctx.get(file_);

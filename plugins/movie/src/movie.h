@@ -24,7 +24,7 @@ private:
     StringIn orderBy_{"orderBy", "",
                       "Columns that order the frames, comma separated, e.g. 'time'; numbers ascending, text in "
                       "byte order; empty = every parameter column, left to right"};
-    PathIn path_{"path", "movie.mp4", "The MP4 file to write (relative to --output or the pipeline's folder)"};
+    OutputPathIn path_{"path", "movie.mp4", "The MP4 file to write (relative to --output or the pipeline's folder)"};
     FloatIn frameRate_{"frameRate", 24.0, 0.1, 240.0, "Frames per second"};
     IntIn quality_{"quality", 18, 0, 51,
                    "x264 constant rate factor: lower is better and larger; 18 looks lossless, 23 is x264's default"};

@@ -1,6 +1,7 @@
 #pragma once
 #include <darkroom/math.h>
 
+#include <numbers>
 #include <string>
 
 namespace darkroom {
@@ -33,7 +34,7 @@ struct Camera {
     // units (orthographic), vertically.
     double halfHeight() const {
         return projection == Projection::Perspective
-                   ? std::tan(fovYDegrees * 3.14159265358979323846 / 360.0)
+                   ? std::tan(fovYDegrees * std::numbers::pi / 360.0)
                    : viewHeight * 0.5;
     }
 

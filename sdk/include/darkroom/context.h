@@ -87,6 +87,9 @@ public:
     std::string get(const ColorMapIn& p) const;
     // Resolved against the pipeline's folder; empty stays empty.
     std::string get(const PathIn& p) const;
+    // Resolved with resolveOutputPath, lexically normal; throws when empty
+    // (a writer needs somewhere to write), naming the port.
+    std::string get(const OutputPathIn& p) const;
     template <class E>
     E get(const EnumIn<E>& p) const {
         return p.parse(getString(p.name()));

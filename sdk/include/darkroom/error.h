@@ -12,7 +12,16 @@ namespace darkroom {
 class DARKROOM_API Error : public std::runtime_error {
 public:
     explicit Error(const std::string& what);
+    // An error the host attributes to a node: `what` already says which (the
+    // host writes "node 'name' (Type): ..."); `node` is the name, as data, for
+    // a UI to mark that node without reading the message.
+    Error(const std::string& what, std::string node);
     ~Error() override;
+    // The failing node's name; empty when the error is no node's.
+    const std::string& node() const noexcept { return node_; }
+
+private:
+    std::string node_;
 };
 
 // Bad input: a file, pipeline, value or size that is wrong or beyond a limit
@@ -21,6 +30,7 @@ public:
 class DARKROOM_API InputError : public Error {
 public:
     explicit InputError(const std::string& what);
+    InputError(const std::string& what, std::string node);
     ~InputError() override;
 };
 

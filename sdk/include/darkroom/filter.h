@@ -3,6 +3,8 @@
 #include <darkroom/export.h>
 #include <darkroom/port.h>
 
+#include <cstddef>
+
 namespace darkroom {
 
 // How the host may call execute() concurrently.
@@ -13,6 +15,22 @@ enum class ThreadSafety : std::uint8_t {
     // Different instances may execute at the same time; one instance is never
     // entered twice at once. The default.
     InstanceSafe,
+    // One instance may be entered by several threads at once (execute keeps
+    // nothing in the instance, or guards it): a host may then shade several
+    // entries of a batch through one instance. Today's hosts run it as
+    // InstanceSafe.
+    Reentrant,
+};
+
+// What the host says about a sequence: its bracket around a series of
+// execute() calls, as OpenFX brackets a series of renders with its
+// begin/end sequence actions. A sequence is one evaluation in the editor or
+// a script, every entry one process shades in a batch (`darkroom run
+// --foreach`), one capture.
+struct SequenceInfo {
+    // Evaluations the sequence is expected to hold (the entries a batch
+    // process was given); 0 when not known.
+    std::size_t length = 0;
 };
 
 // A shading pass or any other node. To add one: inherit, declare ports,
@@ -41,7 +59,10 @@ class DARKROOM_API Filter {
 public:
     virtual ~Filter();
 
-    // Cheap and side-effect free; may be called at any time, many times.
+    // Side-effect free. The host asks a fresh instance of each type once
+    // (and once when the plugin registers, to check the declaration) and
+    // keeps the answer for the session, in the registry: the ports of a type
+    // are fixed, the same for every instance, never computed per call.
     virtual PortList ports() const = 0;
 
     // Reads inputs from the context, allocates and publishes every output.
@@ -50,6 +71,18 @@ public:
     virtual void execute(Context& ctx) = 0;
 
     virtual ThreadSafety threadSafety() const { return ThreadSafety::InstanceSafe; }
+
+    // The sequence bracket. beginSequence comes before this instance's first
+    // execute() of a sequence; endSequence after the sequence's last
+    // evaluation (`completed` false when it stopped early: an error
+    // anywhere, a cancellation), and only if beginSequence was called. A
+    // filter that keeps something between executes — an open database and
+    // its lock, an encoder — takes it inside the bracket and lets it go in
+    // endSequence: outside a sequence it holds nothing. Never called
+    // concurrently with execute() or each other. Throwing from endSequence
+    // fails the sequence, naming the node. Default: nothing.
+    virtual void beginSequence(const SequenceInfo& info);
+    virtual void endSequence(const SequenceInfo& info, bool completed);
 };
 
 }  // namespace darkroom

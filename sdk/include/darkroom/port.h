@@ -65,6 +65,7 @@ struct DARKROOM_API PortList {
     PortSpec& vec3In(std::string name, Vec3 def, std::string doc);
     PortSpec& stringIn(std::string name, std::string def, std::string doc);
     PortSpec& pathIn(std::string name, std::string def, std::string doc);
+    PortSpec& outputPathIn(std::string name, std::string def, std::string doc);
 
     PortSpec& imageOut(std::string name, std::string doc, std::vector<std::string> channels = {});
     PortSpec& valueOut(std::string name, PortType type, std::string doc);
@@ -170,6 +171,16 @@ struct StringIn : PortHandle {
 struct PathIn : PortHandle {
     PathIn(std::string name, std::string def, std::string doc)
         : PortHandle(std::move(name), PortType::Path, std::move(doc)) {
+        spec.defaultValue = std::move(def);
+    }
+};
+// A file or folder the node writes. Context::get resolves it against the
+// runner's --output folder (else the pipeline's) and refuses a path over what
+// a node upstream read; the batch workflow renames it per entry. Every writer
+// declares its output this way, so hosts find outputs by kind, not by name.
+struct OutputPathIn : PortHandle {
+    OutputPathIn(std::string name, std::string def, std::string doc)
+        : PortHandle(std::move(name), PortType::OutputPath, std::move(doc)) {
         spec.defaultValue = std::move(def);
     }
 };

@@ -37,6 +37,33 @@ inline std::vector<std::string_view> split(std::string_view s, char separator) {
     }
 }
 
+// Names separated by commas, spaces or tabs, empty ones dropped: a channel
+// list as typed ("R, G, B", "R G B", "R,G,B" give R, G, B).
+inline std::vector<std::string> splitNames(std::string_view s) {
+    std::vector<std::string> names;
+    std::string name;
+    for (const char c : s) {
+        if (c == ',' || c == ' ' || c == '\t') {
+            if (!name.empty()) names.push_back(std::move(name));
+            name.clear();
+        } else {
+            name += c;
+        }
+    }
+    if (!name.empty()) names.push_back(std::move(name));
+    return names;
+}
+
+// Comma-separated items, trimmed of spaces and tabs, empty ones dropped;
+// an item may hold spaces ("time, phi angle" gives time, phi angle): a list
+// of column or scalar names.
+inline std::vector<std::string> splitList(std::string_view s) {
+    std::vector<std::string> items;
+    for (const std::string_view part : split(s, ','))
+        if (const std::string_view item = trimBlanks(part); !item.empty()) items.emplace_back(item);
+    return items;
+}
+
 // The parts with `separator` between them.
 template <class Parts>
 std::string join(const Parts& parts, std::string_view separator) {

@@ -21,7 +21,11 @@ enum class PortType : std::uint8_t {
     ColorMap,  // a preset name ("viridis") or a path to a ParaView colour-map JSON
     Vec3,
     String,
-    Path,  // a file path, resolved relative to the pipeline file
+    Path,  // a file path read, resolved relative to the pipeline file
+    // A file or folder the node writes, resolved against the runner's
+    // --output folder (else the pipeline's), and never over what a node
+    // upstream read. Batch shading renames it per entry.
+    OutputPath,
 };
 
 DARKROOM_API const char* toString(PortType t);

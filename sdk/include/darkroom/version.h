@@ -7,7 +7,7 @@
 // This line is the only place the number is written: CMake reads it for the
 // config package, and CI compares the SDK library's ABI with the baseline
 // recorded for this number (sdk/abi/, tests/sdk/check_abi.sh).
-#define DARKROOM_ABI_VERSION 3u
+#define DARKROOM_ABI_VERSION 4u
 
 // Human-facing SDK release; informative only, compatibility is the ABI version.
-#define DARKROOM_SDK_VERSION "0.3.0"
+#define DARKROOM_SDK_VERSION "0.4.0"

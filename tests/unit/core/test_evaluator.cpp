@@ -165,6 +165,21 @@ TEST(Evaluator, FilterExceptionsNameTheNode) {
         FAIL() << "the graph is valid";
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), "node 'bad' (TestThrow): deliberate failure");
+        EXPECT_EQ(e.node(), "bad") << "the node is named as data too, for a UI to mark it";
+    }
+}
+
+TEST(Evaluator, AChannelMissingOnAnInputNamesTheNodeAsData) {
+    Graph g(testfilters::registry());
+    g.addNode("src", "TestSource");
+    g.addNode("twice", "TestDoubleA");  // needs channel a, which TestSource lacks
+    g.connect({"src", "image"}, {"twice", "image"});
+    Evaluator ev;
+    try {
+        ev.run(g, {"twice"});
+        FAIL() << "expected the missing channel to be refused";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.node(), "twice") << e.what();
     }
 }
 

@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace testfilters {
 
@@ -263,7 +265,37 @@ public:
     void execute(darkroom::Context&) override { throw darkroom::Error("the input is not what was expected"); }
 };
 
+// A sink that logs its sequence bracket and executions ("begin", "execute
+// 3", "end completed", "end early") to bracketLog(), and whose endSequence
+// throws when `failEnd` was set.
+inline std::vector<std::string>& bracketLog() {
+    static std::vector<std::string> log;
+    return log;
+}
+class Bracketed final : public darkroom::Filter {
+    darkroom::ImageIn image_{"image", "Consumed"};
+    darkroom::IntIn tag_{"tag", 0, 0, 1000, "Logged with each execution"};
+    darkroom::BoolIn failEnd_{"failEnd", false, "endSequence throws"};
+    bool failEnd = false;
+
+public:
+    darkroom::PortList ports() const override { return {image_, tag_, failEnd_}; }
+    void beginSequence(const darkroom::SequenceInfo& info) override {
+        bracketLog().push_back("begin " + std::to_string(info.length));
+    }
+    void execute(darkroom::Context& ctx) override {
+        (void)ctx.get(image_);
+        failEnd = ctx.get(failEnd_);
+        bracketLog().push_back("execute " + std::to_string(ctx.get(tag_)));
+    }
+    void endSequence(const darkroom::SequenceInfo&, bool completed) override {
+        bracketLog().push_back(completed ? "end completed" : "end early");
+        if (failEnd) throw darkroom::Error("could not let go");
+    }
+};
+
 inline void registerAll(darkroom::Registrar& r) {
+    r.addFilter<Bracketed>("TestBracketed", "Test", "Logs its sequence bracket.");
     r.addFilter<TwoPlanes>("TestTwoPlanes", "Test", "Planes a and b.");
     r.addFilter<DoubleA>("TestDoubleA", "Test", "c = 2a, passing the rest on.");
     r.addFilter<CopyAReadingB>("TestCopyAReadingB", "Test", "c = a, reading b too.");

@@ -1,6 +1,7 @@
 #pragma once
 #include <darkroom/error.h>
 #include <darkroom/export.h>
+#include <darkroom/filter.h>
 #include <darkroom/core/graph.h>
 
 #include <atomic>
@@ -119,11 +120,28 @@ public:
     std::set<std::string> wouldRun(const Graph& graph, const std::vector<std::string>& targets) const;
     // Memory held by cached outputs (distinct planes counted once).
     std::size_t cachedBytes() const;
+    // Drops every cached result; a sequence in progress is ended first for
+    // the filters that began it (as not completed).
     void clearCache();
+
+    // The sequence bracket (filter.h). Between beginSequence and
+    // endSequence, evaluations form one sequence: each filter gets
+    // beginSequence before its first execute() in it, and what it holds
+    // between executes (a CinemaWriter its open, locked database) stays
+    // held. endSequence ends every filter that began — all of them, even
+    // when one fails — and then throws an Error naming the first node whose
+    // endSequence failed. An evaluation outside a sequence is a sequence of
+    // its own, ended as it returns or throws, so a filter holds nothing
+    // between evaluations. Sequences do not nest; one evaluation at a time.
+    void beginSequence(SequenceInfo info = {});
+    void endSequence(bool completed = true);
+    bool inSequence() const;
 
 private:
     struct NodeState;
     void ensure(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* cancel);
+    void evaluateWaves(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* cancel);
+    void beginSequenceOf(const Node& n, NodeState& st);
     void process(const Graph& g, const Node& n, NodeState& st, const std::atomic<bool>& cancel);
     void enforceCap(const std::set<std::string>& targets);
     std::size_t cachedBytesLocked() const;
@@ -136,6 +154,24 @@ private:
     std::uint64_t clock_ = 0;  // evaluation counter, for least-recently-used eviction
     struct Progress;
     Progress* progress_ = nullptr;
+    bool sequenceOpen_ = false;
+    SequenceInfo sequence_;
+};
+
+// A sequence of an evaluator for a scope: begun on construction, ended on
+// destruction as not completed (never throwing) unless end() ended it. The
+// batch workflow holds one around the entries a process shades.
+class DARKROOM_API EvaluatorSequence {
+public:
+    explicit EvaluatorSequence(Evaluator& evaluator, SequenceInfo info = {});
+    ~EvaluatorSequence();
+    EvaluatorSequence(const EvaluatorSequence&) = delete;
+    EvaluatorSequence& operator=(const EvaluatorSequence&) = delete;
+    // Ends the sequence as completed; throws what Evaluator::endSequence throws.
+    void end();
+
+private:
+    Evaluator* evaluator_;
 };
 
 }  // namespace darkroom

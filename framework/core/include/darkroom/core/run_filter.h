@@ -42,6 +42,9 @@ class Context;
 DARKROOM_API std::unique_ptr<Context> makeStandaloneContext(const FilterRunOptions& options,
                                                             std::string nodeName = "standalone");
 
+// Runs one execute() of `filter` through the evaluator's node runner, as a
+// sequence of its own (beginSequence, execute, endSequence): what the filter
+// holds between executes is let go before this returns.
 DARKROOM_API FilterRunResult runFilter(Filter& filter,
                                        const std::map<std::string, std::vector<Value>>& inputs,
                                        const FilterRunOptions& options = {});

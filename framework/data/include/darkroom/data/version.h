@@ -6,4 +6,4 @@
 // an incompatible change and record the new baseline with
 // scripts/update-abi.sh data; the library's soname carries the project's
 // major.minor version, so a plugin built against another cannot load it.
-#define DARKROOM_DATA_ABI_VERSION 1
+#define DARKROOM_DATA_ABI_VERSION 2

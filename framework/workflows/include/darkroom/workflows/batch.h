@@ -11,7 +11,9 @@
 // after the last entry, on the lead. Over several processes the entries are
 // handed out by the group's work queue, each process writes the databases
 // into staging databases of its own and the lead merges them
-// (written_databases.h). A resume skips entries whose outputs all exist and
+// (written_databases.h). The entries a process shades are one sequence of
+// its evaluator (Evaluator::beginSequence): a CinemaWriter holds its database
+// across them and lets it go at the end, before the merge. A resume skips entries whose outputs all exist and
 // that every database written in mode resume holds. The index (a CSV of the
 // entries and the files written for each) is the same whatever the number of
 // processes.

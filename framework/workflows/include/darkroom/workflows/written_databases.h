@@ -19,14 +19,15 @@ namespace darkroom::workflows {
 struct DatabaseSink {
     std::string node;
     std::string type;
+    std::string port;      // its output-path input, which names the database
     std::string database;  // resolved as the node resolves it
     std::string mode;      // the node's: create, overwrite or resume
     std::string format;    // the node's product format (png, exr), when it has one
     std::string pipeline;  // what the node records as its upstream pipeline (pipeline_record.h), when it does
 };
 
-// The sinks among `sinks` with a connected `row` input and a `database` path
-// parameter. One whose database comes through an edge is left to itself
+// The sinks among `sinks` with a connected `row` input and an output-path
+// input (PortType::OutputPath), the database they write. One whose database comes through an edge is left to itself
 // alone, and refused (Error) over ranks, where it could not be staged.
 DARKROOM_API std::vector<DatabaseSink> databaseSinks(const Graph& graph, const std::vector<std::string>& sinks,
                                         const EvaluatorOptions& options, bool overRanks);
