@@ -49,12 +49,14 @@ const char* kWriters =
 const char* kMovie =
     "  movie:\n"
     "    type: Movie\n"
-    "    parameters: {database: shaded.cdb, where: \"theta=0\", orderBy: phi, path: orbit.mp4, frameRate: 4}\n";
+    "    parameters: {where: \"theta=0\", orderBy: phi, path: orbit.mp4, frameRate: 4}\n";
 
+// The movie reads the pictures' database through the writer's `written`
+// output: after the merge, the batch gives it the merged database.
 std::string withMovie() {
     std::string p = kWriters;
     p.insert(p.find("edges:"), kMovie);
-    return p;
+    return p + "  - pictures.written -> movie.database\n";
 }
 
 int count(const std::string& text, const std::string& what) {

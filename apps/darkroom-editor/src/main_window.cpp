@@ -26,6 +26,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace editor {
 
 MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagnostics& pluginProblems,
@@ -229,11 +231,12 @@ void MainWindow::scheduleEvaluation() {
         // image output.
         QString sink;
         try {
+            const std::vector<std::string> sinks = g.sinks();
             for (const auto& n : g.topologicalOrder()) {
                 const auto* x = g.node(n);
                 for (const auto& o : g.ports(*x).outputs)
                     if (o.isImage()) node = QString::fromStdString(n);
-                if (g.ports(*x).outputs.empty() && !x->placeholder)
+                if (std::find(sinks.begin(), sinks.end(), n) != sinks.end())
                     for (const auto& e : g.edgesInto(n)) {
                         const auto* up = g.node(e.from.node);
                         const auto* spec = up && !up->placeholder ? g.ports(*up).output(e.from.port) : nullptr;

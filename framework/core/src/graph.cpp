@@ -427,8 +427,13 @@ std::vector<std::string> Graph::topologicalOrder() const {
 
 std::vector<std::string> Graph::sinks() const {
     std::vector<std::string> out;
-    for (const auto& n : nodes_)
-        if (!n.placeholder && ports(n).outputs.empty()) out.push_back(n.name);
+    for (const auto& n : nodes_) {
+        if (n.placeholder) continue;
+        const PortList& p = ports(n);
+        const bool writes = std::any_of(p.inputs.begin(), p.inputs.end(),
+                                        [](const PortSpec& in) { return in.type == PortType::OutputPath; });
+        if (p.outputs.empty() || writes) out.push_back(n.name);
+    }
     return out;
 }
 

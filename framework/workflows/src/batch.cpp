@@ -28,6 +28,11 @@ struct Plan {
     std::vector<std::string> entrySinks, finalSinks;
     std::vector<OutputPort> outputs;
     std::vector<DatabaseSink> databases;
+    // Edges from a database sink into a sink run after the last entry, and
+    // the database's final path: after the last entry the edge is replaced by
+    // that path, so the reader of the database (Movie) does not pull the
+    // per-entry graph again.
+    std::vector<std::pair<Edge, std::string>> afterLast;
     bool staging = false;  // several processes write databases: each into its staging database
     EvaluatorOptions options;
 
@@ -78,13 +83,39 @@ void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
     if (p.rows.empty()) throw InputError(p.source.string() + ": no entry matches '" + s.where + "'");
 }
 
+// What reads a per-entry sink's output: only a sink run after the last entry,
+// directly, from a database sink (Movie from CinemaWriter's `written`), which
+// then gets the database's final path; throws InputError for anything else.
+void planAfterLast(const Graph& g, Plan& p) {
+    const auto in = [](const std::vector<std::string>& names, const std::string& n) {
+        return std::find(names.begin(), names.end(), n) != names.end();
+    };
+    for (const Edge& e : g.edges()) {
+        if (!in(p.entrySinks, e.from.node)) continue;
+        const auto d = std::find_if(p.databases.begin(), p.databases.end(),
+                                    [&](const DatabaseSink& x) { return x.node == e.from.node; });
+        if (d == p.databases.end() || !in(p.finalSinks, e.to.node))
+            throw InputError("--foreach: node '" + e.to.node + "' reads " + e.from.str() +
+                             ", which is written entry by entry; only a node that writes (such as Movie) may read "
+                             "it, directly, and only the database of a CinemaWriter fed the reader's row: it then "
+                             "runs once, after the last entry");
+        p.afterLast.emplace_back(e, fs::absolute(d->database).lexically_normal().string());
+    }
+}
+
 // The sinks per entry and after, what they write, and the refusals that
 // need no file system state: throws InputError.
 void planOutputs(const Graph& g, const BatchSettings& s, bool overRanks, Plan& p) {
-    // Sinks that depend on the entry run once per entry; the others (e.g. a
-    // Movie of the database the entries are written to) once, after the last.
+    // Sinks that depend on the entry run once per entry; the others once,
+    // after the last: those no entry reaches, and those that read what
+    // another sink wrote (a Movie connected to CinemaWriter's `written`).
+    const std::vector<std::string> sinks = g.sinks();
     const std::set<std::string> perEntry = g.downstreamOf({s.reader});
-    for (const auto& sink : g.sinks()) (perEntry.count(sink) ? p.entrySinks : p.finalSinks).push_back(sink);
+    for (const auto& sink : sinks) {
+        bool readsAWrite = false;
+        for (const auto& other : sinks) readsAWrite = readsAWrite || (other != sink && g.downstreamOf({other}).count(sink));
+        (perEntry.count(sink) && !readsAWrite ? p.entrySinks : p.finalSinks).push_back(sink);
+    }
     if (p.entrySinks.empty()) std::swap(p.entrySinks, p.finalSinks);  // nothing reads the entry: every sink per entry
     p.outputs = outputPorts(g, p.entrySinks);
     try {
@@ -93,6 +124,7 @@ void planOutputs(const Graph& g, const BatchSettings& s, bool overRanks, Plan& p
         throw InputError(e.what());
     }
     p.staging = overRanks && !p.databases.empty();
+    planAfterLast(g, p);
     // A database written over the one read would lose the products being
     // shaded (D1 of issue 26). The node refuses the same when it runs alone;
     // under mpirun it writes a staging database, and only the merge would
@@ -258,10 +290,15 @@ void finishOnLead(const BatchSettings& s, const Plan& p, const std::vector<std::
     }
 }
 
-// The sinks that run once after the last entry, on the lead.
-void runFinalSinks(Evaluator& ev, const Plan& p, ProcessGroup& group, const BatchCallbacks& cb,
+// The sinks that run once after the last entry, on the lead, reading the
+// databases the entries were written into (the graph is rewired for it).
+void runFinalSinks(Graph& g, Evaluator& ev, const Plan& p, ProcessGroup& group, const BatchCallbacks& cb,
                    std::exception_ptr& failure) {
     if (!group.lead() || p.finalSinks.empty()) return;
+    for (const auto& [edge, database] : p.afterLast) {
+        g.disconnect(edge.from, edge.to);
+        g.setParameter(edge.to.node, edge.to.port, Value(database));
+    }
     EvaluatorOptions o = p.options;
     o.onProgress = [&cb](double f, const std::string& node) {
         if (cb.progress) cb.progress(f, node);
@@ -307,7 +344,7 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
     summary.failedElsewhere = anyFailed && !summary.failure;
     for (const auto& text : all) summary.shadedPerProcess.push_back(std::size_t(std::count(text.begin(), text.end(), '\n')));
     if (group.lead()) finishOnLead(settings, p, todo, all, summary.failure);
-    if (!summary.failure && !anyFailed) runFinalSinks(evaluator, p, group, cb, summary.failure);
+    if (!summary.failure && !anyFailed) runFinalSinks(graph, evaluator, p, group, cb, summary.failure);
     return summary;
 }
 

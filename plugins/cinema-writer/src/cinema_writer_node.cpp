@@ -122,6 +122,7 @@ void CinemaWriterNode::execute(Context& ctx) {
     // A resumed database keeps the entries it has (written by an earlier,
     // interrupted run); an entry this node wrote is replaced (the editor
     // re-evaluating after an edit).
+    ctx.set(writtenOut_, Value(std::filesystem::absolute(path).lexically_normal().string()));
     const std::string file = writer_->entryFileName(params);
     if (mode == Mode::Resume && writer_->hasEntry(params) && !written_.count(file)) {
         ctx.progress(1.0);

@@ -24,7 +24,7 @@ public:
     CinemaWriterNode();
     ~CinemaWriterNode() override;
     PortList ports() const override {
-        return {image_, row_, database_, format_, channels_, compression_, mode_, pipeline_};
+        return {image_, row_, database_, format_, channels_, compression_, mode_, pipeline_, writtenOut_};
     }
     void execute(Context& ctx) override;
     // The database is opened (and locked) at the first entry of a sequence
@@ -64,6 +64,9 @@ private:
                        "What produced the images, recorded in the database so that a resume refuses a database "
                        "another pipeline wrote: one line per node upstream, 'node<TAB>digest'. darkroom run sets "
                        "it (docs/publishing.md); empty: nothing recorded"};
+    ValueOut writtenOut_{"written", PortType::Path,
+                      "The database written (absolute path): connect Movie's database to it. In a --foreach run "
+                      "a node reading it runs once, after the last entry, on the whole database"};
 
     // The open database (and its lock), inside a sequence only.
     std::unique_ptr<CinemaWriter> writer_;

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 using namespace darkroom;
 using ::testing::HasSubstr;
@@ -109,4 +110,48 @@ TEST(PublishingRun, ForeachWritesADatabaseAndAMovieOfIt) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(out + "/frames.cdb/time=2_phi=90.png"));
     EXPECT_EQ(CinemaDatabase::open(out + "/frames.cdb").rowCount(), 6u);
+}
+
+// The Movie reads the database through CinemaWriter's `written` output: the
+// name is given once, the movie is made once, after the last entry, from the
+// whole database; and the same movie as when both nodes name the database.
+TEST(PublishingRun, AMovieConnectedToTheWriterRunsAfterTheLastEntry) {
+    test::TempDir dir;
+    sourceDatabase(dir.file("source.cdb"));
+    std::string connected = kPipeline;
+    const std::string named = "database: frames.cdb, where";
+    connected.replace(connected.find(named), named.size(), "where");
+    connected += "  - frames.written -> movie.database\n";
+    test::writeText(dir.file("connected.yaml"), connected);
+    test::writeText(dir.file("named.yaml"), kPipeline);
+    for (const char* pipeline : {"connected", "named"}) {
+        const auto r = test::runDarkroom({"-q", "run", dir.file(std::string(pipeline) + ".yaml"), "--foreach", "read",
+                                          "-o", dir.file(pipeline), "--profile"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        // The movie is made once, after the 6 entries, not per entry: one
+        // profile line says it ran.
+        std::size_t made = 0;
+        std::istringstream lines(r.err);
+        for (std::string line; std::getline(lines, line);)
+            made += line.rfind("  movie ", 0) == 0 && line.find(" Movie ") != std::string::npos &&
+                    line.find(" ran ") != std::string::npos;
+        EXPECT_EQ(made, 1u) << r.err;
+    }
+    const auto m = test::decodeMovie(dir.file("connected/talk.mp4"), 46, 30);
+    EXPECT_EQ(m.frames(), 3);
+    EXPECT_LT(m.lumaAt[0], m.lumaAt[2]);
+    EXPECT_EQ(test::readText(dir.file("connected/talk.mp4")), test::readText(dir.file("named/talk.mp4")));
+
+    // Anything but a sink after the last entry reading what is written per
+    // entry is refused before the first entry.
+    std::string chained = connected;
+    chained.replace(chained.find("edges:\n"), 7,
+                    "  caption:\n    type: Annotation\nedges:\n  - read.image -> caption.image\n"
+                    "  - frames.written -> caption.text\n");
+    test::writeText(dir.file("chained.yaml"), chained);
+    const auto refused = test::runDarkroom({"-q", "run", dir.file("chained.yaml"), "--foreach", "read", "-o",
+                                            dir.file("chained")});
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_THAT(refused.err, HasSubstr("node 'caption' reads frames.written, which is written entry by entry"));
+    EXPECT_FALSE(fs::exists(dir.file("chained/frames.cdb")));
 }

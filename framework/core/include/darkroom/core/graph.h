@@ -99,7 +99,9 @@ public:
     Diagnostics validate() const;
     // Nodes in dependency order; throws darkroom::Error naming a node on a cycle.
     std::vector<std::string> topologicalOrder() const;
-    // Nodes with no outputs (writers and other sinks), in insertion order.
+    // Nodes with no outputs, and nodes that write files (an OutputPath
+    // input, even with outputs: CinemaWriter says which database it wrote),
+    // in insertion order: what a run evaluates.
     std::vector<std::string> sinks() const;
     // The nodes `from` depend on through edges, the existing ones among
     // `from` included; and the nodes that depend on `from`, `from` included.

@@ -7,8 +7,11 @@
 // Sinks that depend on the reader run once per entry, their output paths
 // renamed per entry (out.png -> out_<entry>.png, or {entry} replaced), except
 // sinks fed the reader's row (CinemaWriter), which name entries themselves;
-// the other sinks (a Movie of the database a CinemaWriter fills) run once,
-// after the last entry, on the lead. Over several processes the entries are
+// the other sinks run once, after the last entry, on the lead: those no entry
+// reaches and those that read what a per-entry sink wrote (a Movie connected
+// to CinemaWriter's `written`, which then reads the finished database: the
+// batch replaces that edge by the database's path, so the graph is left
+// rewired). Over several processes the entries are
 // handed out by the group's work queue, each process writes the databases
 // into staging databases of its own and the lead merges them
 // (written_databases.h). The entries a process shades are one sequence of
