@@ -12,6 +12,13 @@ extern char** environ;
 
 namespace darkroom::test {
 
+std::string whyUnprivilegedCannotRun() {
+    const ProcessResult r = runDarkroomUnprivileged({"--version"});
+    if (r.exitCode == 0) return "";
+    return "the user nobody cannot start " + std::string(DARKROOM_RUNNER) + " (exit " + std::to_string(r.exitCode) +
+           ": " + r.err + "); a folder on the way is not searchable by others, e.g. a 0700 home or mktemp folder";
+}
+
 namespace {
 
 ProcessResult runWithPrefix(const std::vector<std::string>& prefix, const std::vector<std::string>& args,

@@ -19,6 +19,11 @@ ProcessResult runDarkroom(const std::vector<std::string>& args, const std::vecto
 // and group 65534 (nobody) through setpriv when the test runs as root, so that
 // permissions apply. Files the runner must reach need to be open to others.
 ProcessResult runDarkroomUnprivileged(const std::vector<std::string>& args);
+// Whether runDarkroomUnprivileged can start the runner at all: as root, the
+// user nobody must be able to reach the build tree (a checkout inside a 0700
+// folder, such as root's home or a mktemp folder, it cannot). "" when it
+// can, else why not.
+std::string whyUnprivilegedCannotRun();
 
 // Starts the runner without waiting (output discarded); returns its pid.
 int spawnDarkroom(const std::vector<std::string>& args);

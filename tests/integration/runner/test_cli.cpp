@@ -151,6 +151,7 @@ TEST(RunnerCli, ValidateReportsOk) {
 // file it cannot write is a runtime failure (1). Run without root's power
 // to read anything (as nobody under setpriv when the test runs as root).
 TEST(RunnerCli, PermissionDeniedExitsByWhetherReadingOrWriting) {
+    if (const std::string why = test::whyUnprivilegedCannotRun(); !why.empty()) GTEST_SKIP() << why;
     ColourMapCase c;
     namespace fs = std::filesystem;
     fs::permissions(c.dir.path(), fs::perms::all);
