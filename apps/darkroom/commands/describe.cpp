@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <algorithm>
+
 namespace darkroom::cli {
 
 namespace {
@@ -60,7 +62,11 @@ void addDescribeCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             if (ports.inputs.empty()) fmt::print("  (none)\n");
             fmt::print("\nOutputs:\n");
             for (const auto& p : ports.outputs) fmt::print("{}\n", portLine(p));
+            // As Graph::sinks decides: no outputs, or files written.
+            const bool writes = std::any_of(ports.inputs.begin(), ports.inputs.end(),
+                                            [](const PortSpec& p) { return p.type == PortType::OutputPath; });
             if (ports.outputs.empty()) fmt::print("  (none: this node is an output of the pipeline)\n");
+            else if (writes) fmt::print("  (this node writes files: it is an output of the pipeline)\n");
             return int(kOk);
         };
     });

@@ -80,6 +80,11 @@ TEST(RunnerCli, DescribeShowsPortsAndRejectsUnknownTypes) {
     const auto bad = runDarkroom({"describe", "NoSuchType"});
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.err.find("unknown node type 'NoSuchType'"), std::string::npos) << bad.err;
+    // A writer is an output of the pipeline though it has an output port.
+    const auto writer = runDarkroom({"describe", "CinemaWriter"});
+    EXPECT_NE(writer.out.find("database       outpath"), std::string::npos) << writer.out;
+    EXPECT_NE(writer.out.find("(this node writes files: it is an output of the pipeline)"), std::string::npos)
+        << writer.out;
 }
 
 TEST(RunnerCli, RunColourMapsAFloatExrIntoAPng) {
