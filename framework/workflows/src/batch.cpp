@@ -174,7 +174,7 @@ std::vector<std::size_t> agreeTodo(const BatchSettings& s, const Plan& p, Proces
 // Shades this process's share of `todo`; returns the positions it shaded,
 // one per line. An entry that fails ends this process's share (`failure`)
 // and stops the others taking more.
-std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
+std::string shadeShare(GraphEdits& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
                        const std::vector<std::size_t>& todo, ProcessGroup& group, const BatchCallbacks& cb,
                        std::exception_ptr& failure) {
     const std::unique_ptr<WorkQueue> queue = group.workQueue(todo.size());
@@ -185,8 +185,8 @@ std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Pl
     while (const auto next = queue->next()) {
         const std::size_t position = todo[*next], row = p.rows[position];
         const std::string entry = p.db->entryName(row);
-        g.setParameter(s.reader, "parameters", Value(p.db->formatParameters(row)));
-        for (const auto& out : p.outputs) g.setParameter(out.node, out.port, Value(perEntryPath(out.original, entry)));
+        g.set(s.reader, "parameters", Value(p.db->formatParameters(row)));
+        for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, entry)));
         // Progress between entries counts every process's; during one, this
         // process's own fraction on top.
         const double done = double(kept + queue->finishedEverywhere());
@@ -220,7 +220,7 @@ std::string shadeShare(Graph& g, Evaluator& ev, const BatchSettings& s, const Pl
 // CinemaWriter keeps its database open across them and lets it go (data.csv
 // written a last time, the lock removed) as the sequence ends — before the
 // lead reads the staging databases. A failure to let go fails the batch.
-std::string shadeInSequence(Graph& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
+std::string shadeInSequence(GraphEdits& g, Evaluator& ev, const BatchSettings& s, const Plan& p,
                             const std::vector<std::size_t>& todo, ProcessGroup& group, const BatchCallbacks& cb,
                             std::exception_ptr& failure) {
     EvaluatorSequence sequence(ev, SequenceInfo{group.size() == 1 ? todo.size() : 0});
@@ -292,12 +292,12 @@ void finishOnLead(const BatchSettings& s, const Plan& p, const std::vector<std::
 
 // The sinks that run once after the last entry, on the lead, reading the
 // databases the entries were written into (the graph is rewired for it).
-void runFinalSinks(Graph& g, Evaluator& ev, const Plan& p, ProcessGroup& group, const BatchCallbacks& cb,
+void runFinalSinks(GraphEdits& g, Evaluator& ev, const Plan& p, ProcessGroup& group, const BatchCallbacks& cb,
                    std::exception_ptr& failure) {
     if (!group.lead() || p.finalSinks.empty()) return;
     for (const auto& [edge, database] : p.afterLast) {
-        g.disconnect(edge.from, edge.to);
-        g.setParameter(edge.to.node, edge.to.port, Value(database));
+        g.disconnect(edge);
+        g.set(edge.to.node, edge.to.port, Value(database));
     }
     EvaluatorOptions o = p.options;
     o.onProgress = [&cb](double f, const std::string& node) {
@@ -325,6 +325,7 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
     Plan p;
     p.options = std::move(options);
     // Every process opens the same database and meets the same problems.
+    GraphEdits edits(graph);  // undone as this returns
     openSource(graph, settings, p);
     planOutputs(graph, settings, group.size() > 1, p);
     const std::vector<std::size_t> todo = agreeTodo(settings, p, group);
@@ -332,19 +333,19 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
     // staging database of its own; the lead adopts them all at the end.
     for (const auto& d : p.databases) {
         if (!p.staging) break;
-        graph.setParameter(d.node, d.port, Value(stagingDatabase(d, group.rank())));
-        graph.setParameter(d.node, "mode", Value(std::string("overwrite")));
+        edits.set(d.node, d.port, Value(stagingDatabase(d, group.rank())));
+        edits.set(d.node, "mode", Value(std::string("overwrite")));
     }
     BatchSummary summary;
     summary.selected = p.rows.size();
     summary.kept = p.rows.size() - todo.size();
-    const std::string records = shadeInSequence(graph, evaluator, settings, p, todo, group, cb, summary.failure);
+    const std::string records = shadeInSequence(edits, evaluator, settings, p, todo, group, cb, summary.failure);
     bool anyFailed = false;
     const std::vector<std::string> all = gatherRecords(records, bool(summary.failure), group, anyFailed);
     summary.failedElsewhere = anyFailed && !summary.failure;
     for (const auto& text : all) summary.shadedPerProcess.push_back(std::size_t(std::count(text.begin(), text.end(), '\n')));
     if (group.lead()) finishOnLead(settings, p, todo, all, summary.failure);
-    if (!summary.failure && !anyFailed) runFinalSinks(graph, evaluator, p, group, cb, summary.failure);
+    if (!summary.failure && !anyFailed) runFinalSinks(edits, evaluator, p, group, cb, summary.failure);
     return summary;
 }
 

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <map>
 #include <set>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,5 +43,29 @@ std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
 // row per entry in database order, file names relative to the index's folder.
 void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
                 const std::map<std::size_t, std::vector<std::string>>& filesByRow);
+
+// The batch's edits of the caller's graph (an entry's parameters, staging
+// paths, an edge replaced after the last entry), undone when it goes out of
+// scope: a long-lived front end (the editor, a notebook) keeps the pipeline
+// it had, and only the evaluator's cache remembers the batch.
+class GraphEdits {
+public:
+    explicit GraphEdits(Graph& g) : g_(g) {}
+    ~GraphEdits();
+    GraphEdits(const GraphEdits&) = delete;
+    GraphEdits& operator=(const GraphEdits&) = delete;
+    const Graph& graph() const { return g_; }
+    void set(const std::string& node, const std::string& port, Value value);
+    void disconnect(const Edge& e);
+
+private:
+    struct Saved {
+        std::string node, port;
+        std::optional<Value> value;  // unset: the port's default
+    };
+    Graph& g_;
+    std::vector<Saved> parameters_;
+    std::vector<Edge> edges_;
+};
 
 }  // namespace darkroom::workflows::batch

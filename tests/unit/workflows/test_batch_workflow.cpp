@@ -74,6 +74,8 @@ TEST(BatchWorkflow, ShadesEveryEntryIntoTheDatabaseAndWritesTheIndex) {
     EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 3u);
     EXPECT_EQ(test::readText(b.dir.file("out/index.csv")),
               "time,FILE\n1,shaded.cdb/time=1.exr\n2,shaded.cdb/time=2.exr\n3,shaded.cdb/time=3.exr\n");
+    // The batch's edits of the graph (each entry's parameters) are undone.
+    EXPECT_EQ(b.graph.node("read")->parameter("parameters"), nullptr);
 }
 
 TEST(BatchWorkflow, AResumeShadesOnlyWhatTheDatabaseLacks) {

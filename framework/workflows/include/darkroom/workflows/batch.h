@@ -10,8 +10,9 @@
 // the other sinks run once, after the last entry, on the lead: those no entry
 // reaches and those that read what a per-entry sink wrote (a Movie connected
 // to CinemaWriter's `written`, which then reads the finished database: the
-// batch replaces that edge by the database's path, so the graph is left
-// rewired). Over several processes the entries are
+// batch replaces that edge by the database's path). Every edit the batch
+// makes to `graph` (the entry's parameters, staging paths, that edge) is
+// undone when it returns: the caller keeps the pipeline it had. Over several processes the entries are
 // handed out by the group's work queue, each process writes the databases
 // into staging databases of its own and the lead merges them
 // (written_databases.h). The entries a process shades are one sequence of
