@@ -116,6 +116,11 @@ PortSpec& PortList::outputPathIn(std::string name, std::string def, std::string 
     p.defaultValue = std::move(def);
     return p;
 }
+PortSpec& PortList::rowIn(std::string name, std::string doc) {
+    PortSpec& p = add(inputs, std::move(name), PortType::Row, std::move(doc));
+    p.defaultValue = Row();
+    return p;
+}
 PortSpec& PortList::imageOut(std::string name, std::string doc, std::vector<std::string> channels) {
     PortSpec& p = add(outputs, std::move(name), PortType::Image, std::move(doc));
     p.channels = std::move(channels);
@@ -156,6 +161,7 @@ void checkValue(const PortSpec& port, const Value& v) {
             case PortType::Color: (void)v.asColor(); break;
             case PortType::Vec3: (void)v.asVec3(); break;
             case PortType::Image: (void)v.asImage(); break;
+            case PortType::Row: (void)v.asRow(); break;
             default: (void)v.asString(); break;
         }
     } catch (const Error& e) {

@@ -11,7 +11,7 @@ namespace darkroom {
 
 namespace {
 const char* const kTypeNames[] = {"image", "float", "int",    "bool",   "enum",
-                                  "color", "colormap", "vec3", "string", "path", "outpath"};
+                                  "color", "colormap", "vec3", "string", "path", "outpath", "row"};
 
 const char* heldName(const Value::Storage& s) {
     switch (s.index()) {
@@ -22,7 +22,8 @@ const char* heldName(const Value::Storage& s) {
         case 4: return "a string";
         case 5: return "a colour";
         case 6: return "a vec3";
-        default: return "an image";
+        case 7: return "an image";
+        default: return "a row";
     }
 }
 
@@ -149,6 +150,11 @@ const BufferPtr& Value::asImage() const {
     mismatch(v_, "an image");
 }
 
+const Row& Value::asRow() const {
+    if (auto p = std::get_if<Row>(&v_)) return *p;
+    mismatch(v_, "a row");
+}
+
 bool Value::operator==(const Value& o) const {
     if (v_.index() != o.v_.index()) return false;
     // NaN parameters compare equal so a reloaded pipeline equals the saved one.
@@ -174,6 +180,7 @@ std::string formatValue(PortType type, const Value& v) {
             const Vec3 p = v.asVec3();
             return "[" + formatDouble(p.x) + ", " + formatDouble(p.y) + ", " + formatDouble(p.z) + "]";
         }
+        case PortType::Row: return formatRow(v.asRow());
         default: return v.asString();
     }
 }
@@ -223,6 +230,7 @@ Value parseValue(PortType type, std::string_view text) {
             if (!parseList(t, n) || n.size() != 3) throw Error("expected a vector [x, y, z], got '" + t + "'");
             return Value(Vec3{n[0], n[1], n[2]});
         }
+        case PortType::Row: return Value(parseRow(text));
         default: return Value(std::string(text));
     }
 }

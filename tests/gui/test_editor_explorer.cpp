@@ -252,7 +252,7 @@ void ExplorerTest::pickingAPictureShadesThatRow() {
     QCOMPARE(w_->cinema()->currentEntry(), item);
     const Node* reader = w_->document()->graph().node("cinemareader");
     QVERIFY(reader);
-    QCOMPARE(QString::fromStdString(reader->parameter("parameters")->asString()), w_->cinema()->entries()[item].parameters);
+    QCOMPARE(reader->parameter("entry")->asInt(), std::int64_t(w_->cinema()->entries()[item].row));
     QVERIFY(guitest::waitIdle(*w_));
     QVERIFY(w_->renderView()->image());
     QCOMPARE(w_->renderView()->image()->hostFloat("row")[0], float(ex->model().row(item)));
@@ -368,7 +368,7 @@ void ExplorerTest::gridShowsThePipelinesOutput() {
     QVERIFY(shaded != raw);
     // Exactly what evaluating the pipeline for that entry gives.
     Graph g = w_->document()->graph();
-    g.setParameter("read", "parameters", Value(w_->cinema()->entries()[item].parameters.toStdString()));
+    g.setParameter("read", "entry", Value(std::int64_t(w_->cinema()->entries()[item].row)));
     Evaluator ev;
     const QImage expected = editor::thumbnail(*ev.evaluateImage(g, "colour", "image"), cache->thumbnailSize());
     QCOMPARE(shaded, expected);

@@ -67,7 +67,7 @@ CinemaEntryReader::CinemaEntryReader(const darkroom::Registry& registry, std::st
 
 CinemaEntryReader::~CinemaEntryReader() = default;
 
-darkroom::BufferPtr CinemaEntryReader::read(const QString& parameters) {
+darkroom::BufferPtr CinemaEntryReader::read(std::size_t row) {
     if (!filter_) {
         if (!registry_.filter("CinemaReader"))
             throw darkroom::Error("no CinemaReader node type is registered (cinema-io plugin)");
@@ -78,7 +78,7 @@ darkroom::BufferPtr CinemaEntryReader::read(const QString& parameters) {
     o.registry = &registry_;
     const auto result = darkroom::runFilter(*filter_,
                                             {{"database", {darkroom::Value(database_)}},
-                                             {"parameters", {darkroom::Value(parameters.toStdString())}}},
+                                             {"entry", {darkroom::Value(std::int64_t(row))}}},
                                             o);
     return result.outputs.at("image").asImage();
 }

@@ -23,8 +23,8 @@ namespace editor {
 
 struct CinemaEntry {
     QString label;       // the list's text
-    QString parameters;  // CinemaReader's `parameters` for this entry
-    std::size_t row = 0; // its first data.csv row (drives the sliders)
+    QString parameters;  // the entry as CinemaReader's `parameters` would choose it (tooltips)
+    std::size_t row = 0; // its first data.csv row: CinemaReader's `entry` (drives the sliders)
 };
 
 // A cell as a person reads it: a decimal number in its shortest exact form
@@ -49,7 +49,7 @@ public:
     CinemaEntryReader(const darkroom::Registry& registry, std::string database);
     ~CinemaEntryReader();
     // Throws darkroom::Error (also when no CinemaReader type is registered).
-    darkroom::BufferPtr read(const QString& parameters);
+    darkroom::BufferPtr read(std::size_t row);
 
 private:
     const darkroom::Registry& registry_;

@@ -52,7 +52,35 @@ QWidget* CinemaPanel::control(const QString& column) const {
     return nullptr;
 }
 
-bool CinemaPanel::open(const QString& path, QString* error, const QString& select) {
+std::optional<std::size_t> CinemaPanel::entryOfRow(std::size_t row) const {
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        // In a composable image set an entry is a layer of several rows.
+        const bool inEntry = composable_ ? db_->cell(row, db_->column("CISLayer")) ==
+                                                   db_->cell(entries_[e].row, db_->column("CISLayer")) &&
+                                               db_->cell(row, db_->column("CISImage")) ==
+                                                   db_->cell(entries_[e].row, db_->column("CISImage"))
+                                         : entries_[e].row == row;
+        if (inEntry) return e;
+    }
+    return std::nullopt;
+}
+
+std::size_t CinemaPanel::firstEntry(std::int64_t selectRow, const QString& selectParameters) const {
+    std::optional<std::size_t> e;
+    if (selectRow >= 0 && std::size_t(selectRow) < db_->rowCount()) {
+        e = entryOfRow(std::size_t(selectRow));
+    } else if (!selectParameters.isEmpty()) {
+        try {
+            const auto rows = db_->selectWhere(selectParameters.toStdString());
+            if (!rows.empty()) e = entryOfRow(rows.front());
+        } catch (const std::exception&) {
+            // Not a selection of this database: the first entry, as with none.
+        }
+    }
+    return e.value_or(0);
+}
+
+bool CinemaPanel::open(const QString& path, QString* error, std::int64_t selectRow, const QString& selectParameters) {
     std::vector<CinemaEntry> entries;
     try {
         auto db = darkroom::CinemaDatabase::open(path.toStdString());
@@ -126,15 +154,7 @@ bool CinemaPanel::open(const QString& path, QString* error, const QString& selec
     }
     updating_ = false;
     startThumbnails();
-    std::size_t first = 0;
-    if (!select.isEmpty()) {
-        for (std::size_t e = 0; e < entries_.size(); ++e)
-            if (entries_[e].parameters == select) {
-                first = e;
-                break;
-            }
-    }
-    selectEntry(first);
+    selectEntry(firstEntry(selectRow, selectParameters));
     return true;
 }
 
@@ -151,7 +171,7 @@ void CinemaPanel::selectEntry(std::size_t entry) {
     }
     list_->setCurrentRow(int(entry));
     updating_ = false;
-    emit entryChosen(QString::fromStdString(db_->path()), entries_[entry].parameters);
+    emit entryChosen(QString::fromStdString(db_->path()), qint64(row));
 }
 
 void CinemaPanel::controlsChanged() {
@@ -166,18 +186,7 @@ void CinemaPanel::controlsChanged() {
     }
     try {
         // The same matching as CinemaReader's `parameters` (numbers snap).
-        const std::size_t row = db_->find(q).row;
-        for (std::size_t e = 0; e < entries_.size(); ++e) {
-            const bool inEntry = composable_ ? db_->cell(row, db_->column("CISLayer")) ==
-                                                       db_->cell(entries_[e].row, db_->column("CISLayer")) &&
-                                                   db_->cell(row, db_->column("CISImage")) ==
-                                                       db_->cell(entries_[e].row, db_->column("CISImage"))
-                                             : entries_[e].row == row;
-            if (inEntry) {
-                selectEntry(e);
-                return;
-            }
-        }
+        if (const auto e = entryOfRow(db_->find(q).row)) selectEntry(*e);
     } catch (const std::exception& e) {
         // A combination the sampling does not contain: say so, keep the entry.
         title_->setText(QString::fromStdString(e.what()));
@@ -186,19 +195,19 @@ void CinemaPanel::controlsChanged() {
 
 void CinemaPanel::startThumbnails() {
     stop_ = std::make_shared<std::atomic<bool>>(false);
-    std::vector<QString> parameters;
-    for (std::size_t e = 0; e < std::min(entries_.size(), kMaxThumbs); ++e) parameters.push_back(entries_[e].parameters);
+    std::vector<std::size_t> rows;
+    for (std::size_t e = 0; e < std::min(entries_.size(), kMaxThumbs); ++e) rows.push_back(entries_[e].row);
     QPointer<CinemaPanel> self(this);
     auto stop = stop_;
     const darkroom::Registry* registry = &registry_;
     const std::string database = db_->path();
-    QThreadPool::globalInstance()->start([self, stop, parameters, registry, database] {
+    QThreadPool::globalInstance()->start([self, stop, rows, registry, database] {
         CinemaEntryReader reader(*registry, database);
-        for (std::size_t e = 0; e < parameters.size() && !*stop; ++e) {
+        for (std::size_t e = 0; e < rows.size() && !*stop; ++e) {
             QImage thumb;
             QString problem;
             try {
-                thumb = thumbnail(*reader.read(parameters[e]), kThumb);
+                thumb = thumbnail(*reader.read(rows[e]), kThumb);
             } catch (const std::exception& x) {
                 problem = QString::fromStdString(x.what());
             }

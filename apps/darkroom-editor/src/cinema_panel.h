@@ -27,9 +27,10 @@ class CinemaPanel : public QWidget {
 public:
     explicit CinemaPanel(const darkroom::Registry& registry, QWidget* parent = nullptr);
     ~CinemaPanel() override;
-    // `select`: the entry to choose first (CinemaReader's `parameters`, as a
-    // loaded pipeline has it), else the first entry.
-    bool open(const QString& path, QString* error, const QString& select = {});
+    // The entry to choose first: the one holding row `selectRow` (CinemaReader's
+    // `entry`, as a loaded pipeline has it), else the first `selectParameters`
+    // (its `parameters`) selects, else the first entry.
+    bool open(const QString& path, QString* error, std::int64_t selectRow = -1, const QString& selectParameters = {});
     const darkroom::CinemaDatabase* database() const { return db_ ? &*db_ : nullptr; }
     const std::vector<CinemaEntry>& entries() const { return entries_; }
     std::size_t currentEntry() const { return entry_; }
@@ -43,11 +44,14 @@ public:
     int thumbnailFailures() const { return failures_; }
 
 signals:
-    // The database folder and the entry as CinemaReader's `parameters`.
-    void entryChosen(const QString& database, const QString& parameters);
+    // The database folder and the entry's first row, as CinemaReader's `entry`.
+    void entryChosen(const QString& database, qint64 row);
 
 private:
     void controlsChanged();
+    // The entry holding data.csv row `row` (a composable image set's layer).
+    std::optional<std::size_t> entryOfRow(std::size_t row) const;
+    std::size_t firstEntry(std::int64_t selectRow, const QString& selectParameters) const;
     void startThumbnails();
     const darkroom::Registry& registry_;
     std::optional<darkroom::CinemaDatabase> db_;

@@ -32,8 +32,9 @@ int thumbnailThreads() { return std::clamp(QThread::idealThreadCount() - 1, 1, 4
 // entry and without layout, and what is shown.
 std::string pipelineKey(const darkroom::Graph& graph, const PipelineThumbnails& spec) {
     darkroom::Graph g = graph;
-    for (const auto& n : graph.nodes()) g.node(n.name)->extras.clear();
-    if (g.node(spec.reader)) g.clearParameter(spec.reader, "parameters");
+    for (const auto& n : graph.nodes()) g.clearExtras(n.name);
+    if (g.node(spec.reader))
+        for (const char* choice : {"entry", "parameters"}) g.clearParameter(spec.reader, choice);
     return darkroom::serializePipeline(g) + "|" + spec.node + "." + spec.port + "|" + spec.inputBase;
 }
 
@@ -113,10 +114,10 @@ void ExplorerPanel::setDatabase(const darkroom::CinemaDatabase& db, const std::v
     db_ = db;
     database_ = db.path();
     model_ = ExplorerModel(db, entries);
-    parameters_.clear();
+    rows_.clear();
     QStringList labels;
     for (const auto& e : entries) {
-        parameters_.push_back(e.parameters);
+        rows_.push_back(e.row);
         labels << e.label;
     }
     current_.reset();
@@ -149,9 +150,9 @@ void ExplorerPanel::setPipeline(std::shared_ptr<const darkroom::Graph> graph, co
 void ExplorerPanel::restartThumbnails() {
     if (database_.empty()) return;
     if (pipelineMode_ && pipeline_)
-        cache_->setSource(pipelineThumbnails(pipelineSpec_, parameters_), kThumb);
+        cache_->setSource(pipelineThumbnails(pipelineSpec_, rows_), kThumb);
     else
-        cache_->setSource(productThumbnails(registry_, database_, parameters_), kThumb);
+        cache_->setSource(productThumbnails(registry_, database_, rows_), kThumb);
     grid_->viewport()->update();
 }
 

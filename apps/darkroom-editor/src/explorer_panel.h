@@ -77,7 +77,7 @@ private:
     const darkroom::Registry& registry_;
     std::string database_;
     std::optional<darkroom::CinemaDatabase> db_;  // a copy: the browser may open another
-    std::vector<QString> parameters_;
+    std::vector<std::size_t> rows_;  // each item's CinemaReader `entry`
     ExplorerModel model_;
     std::optional<std::size_t> current_;
     bool pipelineMode_ = false;

@@ -98,14 +98,8 @@ std::string explorerText(const darkroom::Node& n) {
     return {};
 }
 
-void setExplorerText(darkroom::Node& n, const std::string& text) {
-    for (auto it = n.extras.begin(); it != n.extras.end(); ++it)
-        if (it->first == kExploreKey) {
-            if (text.empty()) n.extras.erase(it);
-            else it->second = text;
-            return;
-        }
-    if (!text.empty()) n.extras.emplace_back(kExploreKey, text);
+void setExplorerText(darkroom::Graph& g, const std::string& node, const std::string& text) {
+    g.setExtra(node, kExploreKey, text);
 }
 
 ExplorerState captureState(const ExplorerModel& m, bool pipeline) {

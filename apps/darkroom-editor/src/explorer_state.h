@@ -7,7 +7,7 @@
 //   explore: {brushes: [["phi", 0, 90], ["kind", "a", "b"]], sort: "time", descending: false, show: product}
 //
 // A numeric brush is the range of values; a text brush its first and last
-// category. The picked row is the reader's own `parameters`.
+// category. The picked row is the reader's own `entry`.
 #include "explorer_model.h"
 
 #include <darkroom/core/graph.h>
@@ -42,7 +42,7 @@ ExplorerState parseExplorerState(const std::string& yaml);
 
 // The node's saved state text, "" when it has none; setting "" removes it.
 std::string explorerText(const darkroom::Node& n);
-void setExplorerText(darkroom::Node& n, const std::string& text);
+void setExplorerText(darkroom::Graph& g, const std::string& node, const std::string& text);
 
 ExplorerState captureState(const ExplorerModel& m, bool pipeline);
 // Brushes on axes or categories the database lacks are left out, each

@@ -308,7 +308,7 @@ void GraphScene::commitMoves() {
     if (moved.empty()) return;
     doc_->edit(moved.size() == 1 ? tr("Move %1").arg(QString::fromStdString(moved[0].first)) : tr("Move nodes"),
                [&](darkroom::Graph& g) {
-                   for (const auto& [name, p] : moved) setNodePosition(*g.node(name), p);
+                   for (const auto& [name, p] : moved) setNodePosition(g, name, p);
                });
 }
 

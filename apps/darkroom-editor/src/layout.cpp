@@ -18,16 +18,9 @@ std::optional<QPointF> nodePosition(const darkroom::Node& n) {
     return std::nullopt;
 }
 
-void setNodePosition(darkroom::Node& n, QPointF p) {
+void setNodePosition(darkroom::Graph& g, const std::string& node, QPointF p) {
     // Whole numbers keep the file tidy and the text canonical for the loader.
-    const std::string text = "{position: [" + std::to_string(qRound(p.x())) + ", " +
-                             std::to_string(qRound(p.y())) + "]}";
-    for (auto& [k, v] : n.extras)
-        if (k == "ui") {
-            v = text;
-            return;
-        }
-    n.extras.emplace_back("ui", text);
+    g.setExtra(node, "ui", "{position: [" + std::to_string(qRound(p.x())) + ", " + std::to_string(qRound(p.y())) + "]}");
 }
 
 void autoLayout(darkroom::Graph& g) {
@@ -50,7 +43,7 @@ void autoLayout(darkroom::Graph& g) {
     for (const auto& n : g.nodes()) {
         if (nodePosition(n)) continue;
         const int d = depth[n.name];
-        setNodePosition(*g.node(n.name), QPointF(d * 300.0, next[d]));
+        setNodePosition(g, n.name, QPointF(d * 300.0, next[d]));
         const auto& ports = g.ports(n);
         next[d] += 34 + 26.0 * double(ports.inputs.size() + ports.outputs.size()) + 8 + 40;
     }

@@ -10,7 +10,7 @@
 namespace editor {
 
 std::optional<QPointF> nodePosition(const darkroom::Node& n);
-void setNodePosition(darkroom::Node& n, QPointF p);
+void setNodePosition(darkroom::Graph& g, const std::string& node, QPointF p);
 // Places nodes that have no position: column by topological depth (longest
 // path from a source), rows in insertion order. Positioned nodes stay.
 void autoLayout(darkroom::Graph& g);

@@ -206,7 +206,7 @@ QString MainWindow::addNode(const QString& type, std::optional<QPointF> scenePos
                      ? graphView_->mapToScene(graphView_->viewport()->rect().center()) - QPointF(135, 40)
                      : QPointF(used.right() + 60, used.top() + 22);
     const QString err = doc_->edit(tr("Add %1").arg(name), [&](darkroom::Graph& g) {
-        setNodePosition(g.addNode(name.toStdString(), type.toStdString()), at);
+        setNodePosition(g, g.addNode(name.toStdString(), type.toStdString()).name, at);
     });
     if (!err.isEmpty()) {
         logMessage(err);
@@ -373,7 +373,23 @@ void MainWindow::onEvaluated(const EvalResult& r) {
     emit evaluated();
 }
 
-void MainWindow::onEntryChosen(const QString& database, const QString& parameters) {
+// Whether the reader already reads `row` of the browser's database: by its
+// `entry`, or, without one, by the `parameters` a pipeline was saved with.
+bool MainWindow::readsRow(const darkroom::Node& reader, qint64 row) const {
+    const darkroom::Value* e = reader.parameter("entry");
+    if (e && e->asInt() >= 0) return e->asInt() == row;
+    const darkroom::Value* p = reader.parameter("parameters");
+    const darkroom::CinemaDatabase* db = cinema_->database();
+    if (!p || p->asString().empty() || !db) return false;
+    try {
+        const auto rows = db->selectWhere(p->asString());
+        return !rows.empty() && qint64(rows.front()) == row;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+void MainWindow::onEntryChosen(const QString& database, qint64 row) {
     const darkroom::Graph& g = doc_->graph();
     QString reader;
     const QString sel = scene_->selectedNode();
@@ -397,8 +413,7 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
     if (const auto* n = g.node(reader.toStdString())) {
         // Already reading that entry (a pipeline opened with its database):
         // nothing to edit, the document stays as loaded.
-        const darkroom::Value* p = n->parameter("parameters");
-        if (readsDatabase(*n) && p && QString::fromStdString(p->asString()) == parameters) return;
+        if (readsDatabase(*n) && readsRow(*n, row)) return;
     }
     if (reader.isEmpty()) {
         if (!g.registry().filter("CinemaReader")) return;
@@ -406,17 +421,22 @@ void MainWindow::onEntryChosen(const QString& database, const QString& parameter
         add = true;
     }
     // One edit (and one evaluation) for adding the reader and pointing it at the entry.
-    const QString err = doc_->edit(tr("Cinema entry %1").arg(parameters), [&](darkroom::Graph& gg) {
+    const std::vector<CinemaEntry>& entries = cinema_->entries();
+    const QString label = cinema_->currentEntry() < entries.size() ? entries[cinema_->currentEntry()].label
+                                                                   : QString::number(row);
+    const QString err = doc_->edit(tr("Cinema entry %1").arg(label), [&](darkroom::Graph& gg) {
         const std::string n = reader.toStdString();
         if (add) {
             const QRectF used = scene_->itemsBoundingRect();
-            setNodePosition(gg.addNode(n, "CinemaReader"),
+            setNodePosition(gg, gg.addNode(n, "CinemaReader").name,
                             gg.nodes().size() == 1 ? graphView_->mapToScene(graphView_->viewport()->rect().center()) -
                                                          QPointF(NodeItem::width() / 2, 40)
                                                    : QPointF(used.left(), used.bottom() + 60));
         }
         if (!readsDatabase(*gg.node(n))) gg.setParameter(n, "database", folder.toStdString());
-        gg.setParameter(n, "parameters", parameters.toStdString());
+        // The row replaces a choice by values the pipeline may have had.
+        gg.setParameter(n, "entry", darkroom::Value(std::int64_t(row)));
+        gg.clearParameter(n, "parameters");
     }, add ? QString() : QStringLiteral("cinema:") + reader);
     if (!err.isEmpty()) logMessage(err);
     if (add) {

@@ -25,6 +25,10 @@ class QPlainTextEdit;
 
 class QToolButton;
 
+namespace darkroom {
+struct Node;
+}
+
 namespace editor {
 
 class Autosave;
@@ -66,7 +70,8 @@ public:
     bool openPipeline(const QString& path);
     bool savePipeline(const QString& path);
     // `select`: the entry to choose (CinemaReader's `parameters`), else the first.
-    bool openCinema(const QString& path, const QString& select = {});
+    // `selectRow`, `selectParameters`: the entry to show first (CinemaPanel::open).
+    bool openCinema(const QString& path, std::int64_t selectRow = -1, const QString& selectParameters = {});
     bool exportView(const QString& path);  // .exr: the buffer's channels; else the view as 8-bit
     // Adds a node of `type` and selects it: with its title at `scenePos`, or
     // right of the existing nodes.
@@ -106,7 +111,8 @@ private:
     bool showWaiting(const QString& node, const QString& target);
     // A path as a node's input means it: relative to the pipeline's folder.
     QString absoluteInput(const QString& path) const;
-    void onEntryChosen(const QString& database, const QString& parameters);
+    void onEntryChosen(const QString& database, qint64 row);
+    bool readsRow(const darkroom::Node& reader, qint64 row) const;
     void addRecent(const QString& path);
     void updateRecentMenu();
     void updateTitle();

@@ -78,7 +78,7 @@ void MainWindow::saveExplorerState() {
     const std::string text = toYaml(explorer_->state());
     if (explorerText(*doc_->graph().node(reader.toStdString())) == text) return;
     const QString err = doc_->edit(tr("Explorer selection"), [&](darkroom::Graph& g) {
-        setExplorerText(*g.node(reader.toStdString()), text);
+        setExplorerText(g, reader.toStdString(), text);
     });
     if (!err.isEmpty()) logMessage(err);
 }
@@ -111,8 +111,11 @@ void MainWindow::restoreExplorer() {
             return;
         }
         const QString path = absoluteInput(QString::fromStdString(db->asString()));
-        const darkroom::Value* entry = n.parameter("parameters");
-        if (!openCinema(path, entry ? QString::fromStdString(entry->asString()) : QString())) return;
+        const darkroom::Value* entry = n.parameter("entry");
+        const darkroom::Value* parameters = n.parameter("parameters");
+        if (!openCinema(path, entry ? entry->asInt() : -1,
+                        parameters ? QString::fromStdString(parameters->asString()) : QString()))
+            return;
         std::vector<std::string> problems;
         explorer_->setState(state, &problems);
         for (const auto& p : problems) logMessage(tr("%1 (node '%2'): %3").arg(doc_->path(), name, QString::fromStdString(p)));

@@ -132,11 +132,11 @@ bool MainWindow::savePipeline(const QString& path) {
     return true;
 }
 
-bool MainWindow::openCinema(const QString& path, const QString& select) {
+bool MainWindow::openCinema(const QString& path, std::int64_t selectRow, const QString& selectParameters) {
     QString err;
     // Absolute: the reader it drives resolves relative paths against the
     // pipeline's folder, not the editor's working folder.
-    if (!cinema_->open(QFileInfo(path).absoluteFilePath(), &err, select)) {
+    if (!cinema_->open(QFileInfo(path).absoluteFilePath(), &err, selectRow, selectParameters)) {
         logMessage(err);
         statusBar()->showMessage(err, 10000);
         return false;

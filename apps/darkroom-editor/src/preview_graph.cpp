@@ -27,14 +27,11 @@ darkroom::Graph makePreviewGraph(const darkroom::Graph& graph, int level) {
     if (!graph.registry().filter("Resize"))
         throw darkroom::Error("reduced-resolution preview needs the Resize node type (image-utils plugin)");
     // Built afresh rather than rewired in place: edges keep their order (it
-    // matters for inputs that take several images), and every node of
-    // `graph` keeps its version, so the preview evaluator's cache keys
-    // change only with what the user changed.
+    // matters for inputs that take several images). The evaluator's cache
+    // keys on values, so a level's preview reuses what the last one computed
+    // wherever nothing changed.
     darkroom::Graph g(graph.registry());
-    for (const auto& n : graph.nodes()) {
-        darkroom::Node& copy = n.placeholder ? g.addPlaceholder(n.name, n.type) : g.addNode(n.name, n.type);
-        copy = n;
-    }
+    for (const auto& n : graph.nodes()) g.addCopy(n);
     std::map<std::string, std::string> resized;  // "source.port" -> Resize node
     const double scale = std::ldexp(1.0, -level);
     for (const auto& n : graph.nodes()) {
@@ -46,8 +43,6 @@ darkroom::Graph makePreviewGraph(const darkroom::Graph& graph, int level) {
             g.addNode(name, "Resize");
             g.setParameter(name, "scale", darkroom::Value(scale));
             g.addEdgeUnchecked({{n.name, out.name}, {name, "image"}});
-            // One version per level: the same level reuses the cached copy.
-            g.node(name)->version = std::uint64_t(level);
             resized[n.name + "." + out.name] = name;
         }
     }

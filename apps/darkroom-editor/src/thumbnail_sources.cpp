@@ -12,26 +12,26 @@ namespace {
 class ProductSource : public ThumbnailSource {
 public:
     ProductSource(const darkroom::Registry& registry, const std::string& database,
-                  std::shared_ptr<const std::vector<QString>> parameters)
-        : reader_(registry, database), parameters_(std::move(parameters)) {}
+                  std::shared_ptr<const std::vector<std::size_t>> rows)
+        : reader_(registry, database), rows_(std::move(rows)) {}
     QImage make(std::size_t item, int size) override {
-        return thumbnail(*reader_.read(parameters_->at(item)), size);
+        return thumbnail(*reader_.read(rows_->at(item)), size);
     }
 
 private:
     CinemaEntryReader reader_;
-    std::shared_ptr<const std::vector<QString>> parameters_;
+    std::shared_ptr<const std::vector<std::size_t>> rows_;
 };
 
 class PipelineSource : public ThumbnailSource {
 public:
-    PipelineSource(const PipelineThumbnails& spec, std::shared_ptr<const std::vector<QString>> parameters)
-        : spec_(spec), parameters_(std::move(parameters)), adapter_(1, std::size_t(256) << 20) {
+    PipelineSource(const PipelineThumbnails& spec, std::shared_ptr<const std::vector<std::size_t>> rows)
+        : spec_(spec), rows_(std::move(rows)), adapter_(1, std::size_t(256) << 20) {
         adapter_.setInputBase(spec_.inputBase);
     }
     QImage make(std::size_t item, int size) override {
         darkroom::Graph g = *spec_.graph;
-        g.setParameter(spec_.reader, "parameters", darkroom::Value(parameters_->at(item).toStdString()));
+        g.setParameter(spec_.reader, "entry", darkroom::Value(std::int64_t(rows_->at(item))));
         if (spec_.level < 0) {  // the products' size, from the first one read
             const darkroom::BufferPtr source = adapter_.evaluate(g, spec_.reader, "image", {}, nullptr);
             spec_.level = source ? thumbnailLevel(source->width(), size) : 0;
@@ -44,21 +44,21 @@ public:
 
 private:
     PipelineThumbnails spec_;
-    std::shared_ptr<const std::vector<QString>> parameters_;
+    std::shared_ptr<const std::vector<std::size_t>> rows_;
     EvaluatorAdapter adapter_;
 };
 
 }  // namespace
 
 ThumbnailSourceFactory productThumbnails(const darkroom::Registry& registry, std::string database,
-                                         std::vector<QString> parameters) {
-    auto shared = std::make_shared<const std::vector<QString>>(std::move(parameters));
+                                         std::vector<std::size_t> rows) {
+    auto shared = std::make_shared<const std::vector<std::size_t>>(std::move(rows));
     const darkroom::Registry* r = &registry;
     return [r, database, shared] { return std::make_unique<ProductSource>(*r, database, shared); };
 }
 
-ThumbnailSourceFactory pipelineThumbnails(PipelineThumbnails spec, std::vector<QString> parameters) {
-    auto shared = std::make_shared<const std::vector<QString>>(std::move(parameters));
+ThumbnailSourceFactory pipelineThumbnails(PipelineThumbnails spec, std::vector<std::size_t> rows) {
+    auto shared = std::make_shared<const std::vector<std::size_t>>(std::move(rows));
     return [spec, shared] { return std::make_unique<PipelineSource>(spec, shared); };
 }
 

@@ -16,9 +16,9 @@ namespace darkroom { class Registry; }
 
 namespace editor {
 
-// `parameters[item]`: CinemaReader's `parameters` for each item.
+// `rows[item]`: CinemaReader's `entry` for each item.
 ThumbnailSourceFactory productThumbnails(const darkroom::Registry& registry, std::string database,
-                                         std::vector<QString> parameters);
+                                         std::vector<std::size_t> rows);
 
 struct PipelineThumbnails {
     std::shared_ptr<const darkroom::Graph> graph;
@@ -27,7 +27,7 @@ struct PipelineThumbnails {
     std::string inputBase;   // the pipeline's folder
     int level = -1;          // sources at 1/2^level; -1: chosen from the first entry's product
 };
-ThumbnailSourceFactory pipelineThumbnails(PipelineThumbnails spec, std::vector<QString> parameters);
+ThumbnailSourceFactory pipelineThumbnails(PipelineThumbnails spec, std::vector<std::size_t> rows);
 
 // The preview level that brings a `width`-pixel source down to about twice
 // the thumbnail size (0: already small).

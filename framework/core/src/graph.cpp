@@ -16,9 +16,6 @@
 namespace darkroom {
 
 namespace {
-// Versions are unique across the process, so an evaluator's cache can never
-// confuse a node of one graph with an equally named node of another.
-std::atomic<std::uint64_t> g_versionCounter{0};
 const PortList kNoPorts;
 
 Diagnostic nodeError(const std::string& node, std::string message,
@@ -64,22 +61,32 @@ bool compatible(PortType from, PortType to) {
     return stringy(from) && (to == PortType::String || to == PortType::Path || to == PortType::OutputPath);
 }
 
+Value asPortValue(PortType type, Value v) {
+    if (type == PortType::Float && std::holds_alternative<std::int64_t>(v.storage())) return Value(v.asFloat());
+    if (type == PortType::Row && std::holds_alternative<std::string>(v.storage())) return Value(parseRow(v.asString()));
+    return v;
+}
+
 Graph::Graph(const Registry& registry) : registry_(&registry) {}
 
-void Graph::touch(Node& n) {
-    n.version = ++g_versionCounter;
-    ++revision_;
-}
+void Graph::touch() { ++revision_; }
 
-Node& Graph::addNode(const std::string& name, const std::string& type) {
+const Node& Graph::addNode(const std::string& name, const std::string& type) {
     if (!registry_->filter(type))
         throw Error("unknown node type '" + type + "'; `darkroom plugins` lists the available types");
-    Node& n = addPlaceholder(name, type);
-    n.placeholder = false;
-    return n;
+    addPlaceholder(name, type);
+    nodes_.back().placeholder = false;
+    return nodes_.back();
 }
 
-Node& Graph::addPlaceholder(const std::string& name, const std::string& type) {
+const Node& Graph::addCopy(const Node& node) {
+    if (node.placeholder) addPlaceholder(node.name, node.type);
+    else addNode(node.name, node.type);
+    nodes_.back() = node;
+    return nodes_.back();
+}
+
+const Node& Graph::addPlaceholder(const std::string& name, const std::string& type) {
     if (name.empty()) throw Error("a node needs a name");
     for (char c : name)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
@@ -91,27 +98,21 @@ Node& Graph::addPlaceholder(const std::string& name, const std::string& type) {
     n.placeholder = true;
     nodes_.push_back(std::move(n));
     nodeIndex_[name] = nodes_.size() - 1;
-    touch(nodes_.back());
-    return *handOut(nodes_.size() - 1);
+    touch();
+    return nodes_.back();
 }
 
 void Graph::removeNode(const std::string& name) {
     auto it = std::find_if(nodes_.begin(), nodes_.end(), [&](const Node& n) { return n.name == name; });
     if (it == nodes_.end()) throw Error("no node named '" + name + "'");
-    std::set<std::string> downstream;
-    for (const auto& e : edges_)
-        if (e.from.node == name) downstream.insert(e.to.node);
     std::erase_if(edges_, [&](const Edge& e) { return e.from.node == name || e.to.node == name; });
     nodes_.erase(it);
     reindex();
-    for (const auto& d : downstream)
-        if (Node* n = node(d)) touch(*n);
-    ++revision_;
+    touch();
 }
 
 void Graph::renameNode(const std::string& from, const std::string& to) {
-    Node* n = node(from);
-    if (!n) throw Error("no node named '" + from + "'");
+    Node* n = &mutableNode(from);
     if (from == to) return;
     if (node(to)) throw Error("a node named '" + to + "' already exists");
     n->name = to;
@@ -120,11 +121,10 @@ void Graph::renameNode(const std::string& from, const std::string& to) {
         if (e.to.node == from) e.to.node = to;
     }
     reindex();
-    touch(*node(to));
+    touch();
 }
 
 void Graph::reindex() {
-    handedOut_.clear();
     nodeIndex_.clear();
     edgesFrom_.clear();
     edgesTo_.clear();
@@ -135,39 +135,15 @@ void Graph::reindex() {
     }
 }
 
-const Node* Graph::findNode(const std::string& name) const {
-    if (auto it = nodeIndex_.find(name); it != nodeIndex_.end() && it->second < nodes_.size() &&
-                                         nodes_[it->second].name == name)
-        return &nodes_[it->second];
-    // Not indexed under this name: a caller may have renamed a node through
-    // the pointer node() returns, so look the slow way.
-    for (const auto& n : nodes_)
-        if (n.name == name) return &n;
-    return nullptr;
+const Node* Graph::node(const std::string& name) const {
+    const auto it = nodeIndex_.find(name);
+    return it == nodeIndex_.end() ? nullptr : &nodes_[it->second];
 }
 
-const Node* Graph::node(const std::string& name) const { return findNode(name); }
-
-Node* Graph::node(const std::string& name) {
-    // A miss costs no scan here (a 100,000-node pipeline checks each new name
-    // for uniqueness): renames through handed-out pointers are folded in first.
-    resync();
-    auto it = nodeIndex_.find(name);
-    return it == nodeIndex_.end() ? nullptr : handOut(it->second);
-}
-
-Node* Graph::handOut(std::size_t i) {
-    handedOut_.emplace_back(i, nodes_[i].name);
-    return &nodes_[i];
-}
-
-void Graph::resync() {
-    for (const auto& [i, before] : handedOut_) {
-        if (i >= nodes_.size() || nodes_[i].name == before) continue;
-        if (auto it = nodeIndex_.find(before); it != nodeIndex_.end() && it->second == i) nodeIndex_.erase(it);
-        nodeIndex_[nodes_[i].name] = i;
-    }
-    handedOut_.clear();
+Node& Graph::mutableNode(const std::string& name) {
+    const auto it = nodeIndex_.find(name);
+    if (it == nodeIndex_.end()) throw Error("no node named '" + name + "'");
+    return nodes_[it->second];
 }
 
 const PortList& Graph::ports(const Node& n) const {
@@ -176,8 +152,7 @@ const PortList& Graph::ports(const Node& n) const {
 }
 
 void Graph::setParameter(const std::string& nodeName, const std::string& port, Value value) {
-    Node* n = node(nodeName);
-    if (!n) throw Error("no node named '" + nodeName + "'");
+    Node* n = &mutableNode(nodeName);
     if (n->placeholder) throw Error("node '" + nodeName + "' has unknown type '" + n->type + "'");
     const PortList& ports = this->ports(*n);
     const PortSpec* spec = ports.input(port);
@@ -186,26 +161,52 @@ void Graph::setParameter(const std::string& nodeName, const std::string& port, V
                     "'; inputs: " + portNames(ports.inputs));
     if (spec->type == PortType::Image)
         throw Error("node '" + nodeName + "': input '" + port + "' is an image; connect it instead");
-    if (spec->type == PortType::Float && std::holds_alternative<std::int64_t>(value.storage()))
-        value = Value(value.asFloat());
+    value = asPortValue(spec->type, std::move(value));
     checkParameter(*spec, value);
     for (auto& [k, v] : n->parameters)
         if (k == port) {
             if (v == value) return;  // unchanged: keep the cache
             v = std::move(value);
-            touch(*n);
+            touch();
             return;
         }
     n->parameters.emplace_back(port, std::move(value));
-    touch(*n);
+    touch();
 }
 
 void Graph::clearParameter(const std::string& nodeName, const std::string& port) {
-    Node* n = node(nodeName);
-    if (!n) throw Error("no node named '" + nodeName + "'");
-    const auto before = n->parameters.size();
-    std::erase_if(n->parameters, [&](const auto& kv) { return kv.first == port; });
-    if (n->parameters.size() != before) touch(*n);
+    Node& n = mutableNode(nodeName);
+    const auto before = n.parameters.size();
+    std::erase_if(n.parameters, [&](const auto& kv) { return kv.first == port; });
+    if (n.parameters.size() != before) touch();
+}
+
+void Graph::setRawParameter(const std::string& nodeName, const std::string& port, std::string yamlText) {
+    Node& n = mutableNode(nodeName);
+    if (!n.placeholder) throw Error("node '" + nodeName + "' is not a placeholder; set its parameters as values");
+    if (!n.rawParameters.count(port)) n.rawParameterOrder.push_back(port);
+    n.rawParameters[port] = std::move(yamlText);
+    touch();
+}
+
+void Graph::setExtra(const std::string& nodeName, const std::string& key, const std::string& yamlText) {
+    auto& extras = mutableNode(nodeName).extras;
+    const auto it = std::find_if(extras.begin(), extras.end(), [&](const auto& kv) { return kv.first == key; });
+    if (yamlText.empty()) {
+        if (it != extras.end()) extras.erase(it);
+    } else if (it != extras.end()) {
+        it->second = yamlText;
+    } else {
+        extras.emplace_back(key, yamlText);
+    }
+}
+
+void Graph::clearExtras(const std::string& nodeName) { mutableNode(nodeName).extras.clear(); }
+
+void Graph::setSourceLocation(const std::string& nodeName, int line, int column) {
+    Node& n = mutableNode(nodeName);
+    n.line = line;
+    n.column = column;
 }
 
 bool Graph::canConnect(const Endpoint& from, const Endpoint& to, std::string* why) const {
@@ -256,8 +257,7 @@ void Graph::addEdgeUnchecked(const Edge& e) {
     edges_.push_back(e);
     edgesFrom_[e.from.node].push_back(edges_.size() - 1);
     edgesTo_[e.to.node].push_back(edges_.size() - 1);
-    if (Node* n = node(e.to.node)) touch(*n);
-    ++revision_;
+    touch();
 }
 
 void Graph::disconnect(const Endpoint& from, const Endpoint& to) {
@@ -265,7 +265,7 @@ void Graph::disconnect(const Endpoint& from, const Endpoint& to) {
     std::erase_if(edges_, [&](const Edge& e) { return e.from == from && e.to == to; });
     if (edges_.size() == before) throw Error("no connection from " + from.str() + " to " + to.str());
     reindex();
-    if (Node* n = node(to.node)) touch(*n);
+    touch();
 }
 
 std::vector<Edge> Graph::edgesInto(const std::string& n, const std::string& port) const {
@@ -409,7 +409,7 @@ std::vector<std::string> Graph::topologicalOrder() const {
                 continue;
             }
             const std::string& up = edges_[in[f.next++]].from.node;
-            if (!findNode(up)) continue;
+            if (!node(up)) continue;
             int& s = state[up];
             if (s == 2) continue;
             if (s == 1) {
@@ -444,7 +444,7 @@ std::set<std::string> Graph::reachable(const std::vector<std::string>& from, con
     while (!todo.empty()) {
         std::string n = std::move(todo.back());
         todo.pop_back();
-        if (!findNode(n) || !seen.insert(n).second) continue;
+        if (!node(n) || !seen.insert(n).second) continue;
         if (auto it = index.find(n); it != index.end())
             for (const std::size_t i : it->second)
                 todo.push_back(downstream ? edges_[i].to.node : edges_[i].from.node);

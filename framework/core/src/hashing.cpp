@@ -40,7 +40,12 @@ std::uint64_t hashValue(const Value& v) {
             else if constexpr (std::is_same_v<T, Color>)
                 return mixDouble(mixDouble(mixDouble(mixDouble(h, x.r), x.g), x.b), x.a);
             else if constexpr (std::is_same_v<T, Vec3>) return mixVec(h, x);
-            else return mix(h, std::uint64_t(reinterpret_cast<std::uintptr_t>(x.get())));
+            else if constexpr (std::is_same_v<T, Row>) {
+                // By content: a reader that runs again and reads the same
+                // entry leaves the nodes fed its row cached.
+                for (const RowCell& c : x.cells()) h = mixText(mixText(h, c.column), c.text);
+                return mix(h, x.cells().size());
+            } else return mix(h, std::uint64_t(reinterpret_cast<std::uintptr_t>(x.get())));
         },
         s);
 }

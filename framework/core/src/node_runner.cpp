@@ -3,6 +3,8 @@
 #include "hashing.h"
 #include "host_context.h"
 
+#include <darkroom/core/graph.h>
+
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
 #include <darkroom/limits.h>
@@ -100,7 +102,7 @@ std::string nodeLabel(const std::string& name, const std::string& type) {
 namespace {
 
 // The inputs as the filter sees them: checked against their ports (required
-// channels, value ranges), an integer given to a float port widened.
+// channels, value ranges), taken as the port takes them (asPortValue).
 std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, const std::string& label) {
     std::map<std::string, std::vector<Value>> out;
     for (const auto& [name, values] : call.inputs) {
@@ -108,9 +110,12 @@ std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, co
         if (!in) throw Error(label + ": has no input '" + name + "'", call.name);
         std::vector<Value> vs;
         for (const auto& v : values) {
-            Value x = v;
-            if (in->type == PortType::Float && std::holds_alternative<std::int64_t>(x.storage()))
-                x = Value(x.asFloat());
+            Value x;
+            try {
+                x = asPortValue(in->type, v);
+            } catch (const Error& e) {
+                throw Error(label + ": input '" + in->name + "': " + e.what(), call.name);
+            }
             if (in->type == PortType::Image) {
                 const BufferPtr& b = x.asImage();
                 if (!b) throw Error(label + ": input '" + in->name + "' received no image", call.name);

@@ -127,7 +127,7 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
             r.error(body.Mark(), "node '" + name + "' needs a 'type' (e.g. type: ColorMapping)", name);
             continue;
         }
-        Node* n = nullptr;
+        const Node* n = nullptr;
         try {
             if (registry.filter(type.Scalar())) {
                 n = &g.addNode(name, type.Scalar());
@@ -140,8 +140,7 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
             r.error(it->first.Mark(), e.what(), name);
             continue;
         }
-        n->line = it->first.Mark().line + 1;
-        n->column = it->first.Mark().column + 1;
+        g.setSourceLocation(name, it->first.Mark().line + 1, it->first.Mark().column + 1);
         for (auto kv = body.begin(); kv != body.end(); ++kv) {
             const std::string key = kv->first.Scalar();
             if (key == "type") continue;
@@ -153,7 +152,7 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
                 continue;
             }
             if (key != "parameters") {
-                n->extras.emplace_back(key, flowText(kv->second));
+                g.setExtra(name, key, flowText(kv->second));
                 continue;
             }
             const YAML::Node params = kv->second;
@@ -165,10 +164,9 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
             const std::string nodeName = n->name;
             for (auto p = params.begin(); p != params.end(); ++p) {
                 const std::string port = p->first.Scalar();
-                Node* cur = g.node(nodeName);
+                const Node* cur = g.node(nodeName);
                 if (cur->placeholder) {
-                    cur->rawParameters[port] = flowText(p->second);
-                    cur->rawParameterOrder.push_back(port);
+                    g.setRawParameter(nodeName, port, flowText(p->second));
                     continue;
                 }
                 const PortSpec* spec = g.ports(*cur).input(port);

@@ -1,6 +1,7 @@
 #include <darkroom/workflows/batch.h>
 
 #include "batch_plan.h"
+#include "entry_ports.h"
 
 #include <darkroom/error.h>
 #include <darkroom/core/path_overlap.h>
@@ -64,10 +65,12 @@ std::string sharedOutputFile(const Plan& p) {
 // The database read and the selected rows; throws InputError.
 void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
     const Node* reader = g.node(s.reader);
-    if (!reader || !g.ports(*reader).input("database") || !g.ports(*reader).input("parameters"))
+    const PortSpec* database = reader ? entryReaderDatabase(g, *reader) : nullptr;
+    if (!database)
         throw InputError("--foreach " + s.reader +
-                         ": expected the name of a CinemaReader node (with 'database' and 'parameters')");
-    p.source = currentValue(g, s.reader, "database");
+                         ": expected the name of a node that reads a database entry by entry, such as CinemaReader "
+                         "(a row output, a path input for the database and an integer input 'entry')");
+    p.source = currentValue(g, s.reader, database->name);
     if (p.source.is_relative()) p.source = fs::path(p.options.inputBase) / p.source;
     try {
         p.db.emplace(CinemaDatabase::open(p.source.string()));
@@ -185,7 +188,7 @@ std::string shadeShare(GraphEdits& g, Evaluator& ev, const BatchSettings& s, con
     while (const auto next = queue->next()) {
         const std::size_t position = todo[*next], row = p.rows[position];
         const std::string entry = p.db->entryName(row);
-        g.set(s.reader, "parameters", Value(p.db->formatParameters(row)));
+        g.set(s.reader, kEntryPort, Value(std::int64_t(row)));
         for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, entry)));
         // Progress between entries counts every process's; during one, this
         // process's own fraction on top.

@@ -1,5 +1,7 @@
 #include "batch_plan.h"
 
+#include "entry_ports.h"
+
 #include <darkroom/atomic_file.h>
 #include <darkroom/data/cinema/csv.h>
 
@@ -24,13 +26,13 @@ std::string perEntryPath(const std::string& path, const std::string& entry) {
 }
 
 // The output paths (PortType::OutputPath) of the sinks that run per entry,
-// to rename per entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
-// has) names its entries itself: its paths stay as given.
+// to rename per entry. A sink fed the entry's row (a Row input connected, as
+// CinemaWriter has) names its entries itself: its paths stay as given.
 std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks) {
     std::vector<OutputPort> out;
     for (const auto& name : sinks) {
         const Node* n = g.node(name);
-        if (g.ports(*n).input("row") && !g.edgesInto(name, "row").empty()) continue;
+        if (isFedARow(g, *n)) continue;
         for (const auto& p : g.ports(*n).inputs) {
             if (p.type != PortType::OutputPath) continue;
             const Value* v = n->parameter(p.name);

@@ -24,7 +24,7 @@ struct OutputPort {
 };
 
 // The Path parameters of the output nodes that run per entry, to rename per
-// entry. A sink fed the entry's row (a `row` input connected, as CinemaWriter
+// entry. A sink fed the entry's row (a Row input connected, as CinemaWriter
 // has) names its entries itself: its paths stay as given.
 std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks);
 

@@ -1,6 +1,7 @@
 #include <darkroom/workflows/pipeline_record.h>
 
 #include "content_hash.h"
+#include "entry_ports.h"
 
 #include <darkroom/value.h>
 
@@ -11,16 +12,11 @@ namespace darkroom::workflows {
 
 namespace {
 
-bool isReader(const Graph& g, const Node& n) {
-    const PortSpec* database = g.ports(n).input("database");
-    return database && database->type == PortType::Path;
-}
-
 std::string digestOf(const Graph& g, const Node& n) {
     ContentHash h;
     h.add(n.type);
     for (const PortSpec& in : g.ports(n).inputs) {
-        if (in.name == "parameters" && isReader(g, n)) continue;
+        if (choosesEntry(g, n, in)) continue;  // per entry: the same pipeline for every entry
         h.add(in.name);
         const std::vector<Edge> edges = g.edgesInto(n.name, in.name);
         for (const Edge& e : edges) h.add("<- " + e.from.str());

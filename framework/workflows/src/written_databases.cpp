@@ -8,6 +8,8 @@
 #include <darkroom/data/cinema/writer.h>
 #include <darkroom/workflows/staging.h>
 
+#include "entry_ports.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -43,7 +45,7 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
         const auto& inputs = g.ports(*n).inputs;
         const auto database = std::find_if(inputs.begin(), inputs.end(),
                                            [](const PortSpec& p) { return p.type == PortType::OutputPath; });
-        if (!g.ports(*n).input("row") || g.edgesInto(name, "row").empty() || database == inputs.end()) continue;
+        if (!isFedARow(g, *n) || database == inputs.end()) continue;
         DatabaseSink sink{name,
                           n->type,
                           database->name,

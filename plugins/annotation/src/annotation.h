@@ -24,7 +24,7 @@ private:
                    "The text. {column} is replaced by that column of `row` as written, {column:.2f} formats it as a "
                    "number (Python/fmt syntax), {{ and }} are braces; a line break, or the two characters \\n, "
                    "starts a new line"};
-    StringIn row_{"row", "",
+    RowIn row_{"row",
                   "The Cinema row the placeholders come from: connect CinemaReader's row (or type "
                   "'time=0.5, phi=30')"};
     EnumIn<Anchor> anchor_{"anchor",

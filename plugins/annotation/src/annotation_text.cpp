@@ -27,7 +27,7 @@ std::string lineBreaks(std::string_view text) {
 
 // One placeholder's text ("name" or "name:spec" between the braces), through
 // the framework's formatting, with the limits checked first.
-std::string fillOne(std::string_view inside, const CinemaRow& row, bool markup) {
+std::string fillOne(std::string_view inside, const Row& row, bool markup) {
     const std::size_t colon = inside.find(':');
     if (colon != std::string_view::npos)
         text::checkFormatSpec(inside.substr(colon + 1),
@@ -35,7 +35,7 @@ std::string fillOne(std::string_view inside, const CinemaRow& row, bool markup) 
     std::string_view name = inside.substr(0, colon);
     while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
     while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
-    for (const auto& [column, cell] : row)
+    for (const auto& [column, cell] : row.cells())
         if (column == name) text::checkTextLength(cell, "text: the value of {" + column + "}");
     const std::string value = fillRowPlaceholders("{" + std::string(inside) + "}", row, "text");
     return markup ? text::escapeMarkup(value) : value;
@@ -43,21 +43,20 @@ std::string fillOne(std::string_view inside, const CinemaRow& row, bool markup) 
 
 // Throws the framework's error for the template's unbalanced braces (its
 // message quotes the whole text, as for any other node).
-[[noreturn]] void braceError(const std::string& lines, const CinemaRow& row) {
+[[noreturn]] void braceError(const std::string& lines, const Row& row) {
     fillRowPlaceholders(lines, row, "text");
     throw Error("text: unbalanced braces in '" + lines + "'");
 }
 
 }  // namespace
 
-std::string expandText(std::string_view text, std::string_view rowText, bool markup) {
+std::string expandText(std::string_view text, const Row& row, bool markup) {
     text::checkTextLength(text, "text");
     const std::string lines = lineBreaks(text);
-    if (!hasRowPlaceholders(lines)) return fillRowPlaceholders(lines, {}, "text");  // resolves {{ }}
-    if (rowText.empty())
+    if (!hasRowPlaceholders(lines)) return fillRowPlaceholders(lines, Row(), "text");  // resolves {{ }}
+    if (row.empty())
         throw Error("the text has placeholders but 'row' is empty; connect CinemaReader's row output (or set row "
                     "to e.g. 'time=0.5')");
-    const CinemaRow row = parseCinemaRow(rowText);
     // Each placeholder is filled alone, so that its value can be escaped and
     // the growing result bounded; braces follow fillRowPlaceholders.
     std::string out;

@@ -59,14 +59,14 @@ Ink inkOf(const Buffer& before, const Buffer& after) {
 
 TEST(Annotation, ExpandsPlaceholdersAndLineBreaks) {
     using annotation::expandText;
-    EXPECT_EQ(expandText("t = {time:.2f} s\\nphi = {phi}°", "time=0.125, phi=30", false), "t = 0.12 s\nphi = 30°");
-    EXPECT_EQ(expandText("no row needed {{here}}", "", false), "no row needed {here}");
-    EXPECT_EQ(expandText("two\nlines", "", false), "two\nlines");
-    EXPECT_EQ(expandText("{{{phi}}} {{x}}", "phi=-30", true), "{-30} {x}");
+    EXPECT_EQ(expandText("t = {time:.2f} s\\nphi = {phi}°", parseRow("time=0.125, phi=30"), false), "t = 0.12 s\nphi = 30°");
+    EXPECT_EQ(expandText("no row needed {{here}}", parseRow(""), false), "no row needed {here}");
+    EXPECT_EQ(expandText("two\nlines", parseRow(""), false), "two\nlines");
+    EXPECT_EQ(expandText("{{{phi}}} {{x}}", parseRow("phi=-30"), true), "{-30} {x}");
     // Markup: values are escaped, the template is not; a value's own "\n" stays as written.
-    EXPECT_EQ(expandText("<i>{a}</i>\\n{b:>6}|{c:.2}", "a=R&D, b=<x>, c=\"'\"\"x\"", true),
+    EXPECT_EQ(expandText("<i>{a}</i>\\n{b:>6}|{c:.2}", parseRow("a=R&D, b=<x>, c=\"'\"\"x\""), true),
               "<i>R&amp;D</i>\n   &lt;x&gt;|&apos;&quot;");
-    EXPECT_EQ(expandText("{a}", "a=x\\ny", true), "x\\ny");
+    EXPECT_EQ(expandText("{a}", parseRow("a=x\\ny"), true), "x\\ny");
 }
 
 TEST(Annotation, FilledPlaceholdersDrawExactlyTheTypedText) {

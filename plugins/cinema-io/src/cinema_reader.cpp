@@ -40,6 +40,20 @@ std::shared_ptr<const CinemaDatabase> CinemaReader::open(const std::string& path
     return cache_->db;
 }
 
+std::size_t CinemaReader::rowOf(const CinemaDatabase& db, const std::string& parameters, Context& ctx) const {
+    if (CinemaDatabase::looksLikeSql(parameters)) {
+        const auto rows = db.query(parameters);
+        if (rows.empty()) throw Error("no entry of Cinema database '" + db.path() + "' satisfies '" + parameters + "'");
+        if (rows.size() > 1)
+            ctx.warn(std::to_string(rows.size()) + " entries satisfy '" + parameters + "'; reading the first (" +
+                     db.csvPath() + ":" + std::to_string(db.line(rows[0])) + ")");
+        return rows[0];
+    }
+    const auto match = db.find(parameters);
+    for (const auto& note : match.notes) ctx.warn(note);
+    return match.row;
+}
+
 void CinemaReader::execute(Context& ctx) {
     const std::string path = ctx.get(database_);
     if (path.empty()) throw Error("no database given; set 'database' to a .cdb folder");
@@ -47,6 +61,10 @@ void CinemaReader::execute(Context& ctx) {
     // The cache key: data.csv and the product read, by modification time and size.
     ctx.readsFile(db->csvPath());
     for (const auto& w : db->warnings()) ctx.warn(w.where + ": " + w.message);
+    const std::int64_t entry = ctx.get(entry_);
+    if (entry >= 0 && std::uint64_t(entry) >= db->rowCount())
+        throw Error("entry " + std::to_string(entry) + " is past the last row of Cinema database '" + db->path() +
+                    "' (" + std::to_string(db->rowCount()) + " rows, numbered from 0)");
     const std::string& parameters = ctx.get(parameters_);
     const std::string& file = ctx.get(file_);
     Diagnostics notes;
@@ -54,34 +72,22 @@ void CinemaReader::execute(Context& ctx) {
     std::size_t rowRead = 0;
     if (isComposableImageSet(*db) && file.empty()) {
         // Every channel row of the chosen layer is merged into one buffer.
-        const auto rows = parameters.empty() ? std::vector<std::size_t>{0} : db->selectWhere(parameters);
+        const auto rows = entry >= 0            ? std::vector<std::size_t>{std::size_t(entry)}
+                          : parameters.empty() ? std::vector<std::size_t>{0}
+                                               : db->selectWhere(parameters);
         for (const std::size_t r : rows) ctx.readsFile(db->productPath(r, ""));
         if (!rows.empty()) rowRead = rows.front();
         image = readComposableRows(*db, rows, &notes);
     } else {
-        std::size_t row = 0;
-        if (CinemaDatabase::looksLikeSql(parameters)) {
-            const auto rows = db->query(parameters);
-            if (rows.empty())
-                throw Error("no entry of Cinema database '" + db->path() + "' satisfies '" + parameters + "'");
-            if (rows.size() > 1)
-                ctx.warn(std::to_string(rows.size()) + " entries satisfy '" + parameters + "'; reading the first (" +
-                         db->csvPath() + ":" + std::to_string(db->line(rows[0])) + ")");
-            row = rows[0];
-        } else {
-            const auto match = db->find(parameters);
-            for (const auto& note : match.notes) ctx.warn(note);
-            row = match.row;
-        }
-        rowRead = row;
-        const std::string product = db->productPath(row, file);
+        rowRead = entry >= 0 ? std::size_t(entry) : rowOf(*db, parameters, ctx);
+        const std::string product = db->productPath(rowRead, file);
         ctx.readsFile(product);
         image = readCinemaProduct(product, &notes);
     }
     for (const auto& n : notes) ctx.warn(n.where + ": " + n.message);
     ctx.progress(1.0);
     ctx.set(result_, image);
-    ctx.set(row_, Value(cinemaRowText(*db, rowRead)));
+    ctx.set(row_, Value(cinemaRow(*db, rowRead)));
 }
 
 }  // namespace darkroom

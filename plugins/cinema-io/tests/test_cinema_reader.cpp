@@ -158,6 +158,38 @@ TEST(CinemaReader, RowOutputHoldsTheEntryReadWithAbsoluteProductPaths) {
     // A partial query: the row output is the whole row that was read (the
     // product path holds '=', so it is quoted).
     const auto r = readEntry(dir.file("rows.cdb"), "time=1.5");
-    const std::string row = r.outputs.at("row").asString();
-    EXPECT_EQ(row, "time=1.5, phi=30, FILE=\"" + dir.file("rows.cdb/time=1.5_phi=30.exr") + "\"");
+    const Row& row = r.outputs.at("row").asRow();
+    EXPECT_EQ(row, Row({{"time", "1.5"}, {"phi", "30"}, {"FILE", dir.file("rows.cdb/time=1.5_phi=30.exr")}}));
+    EXPECT_EQ(formatRow(row), "time=1.5, phi=30, FILE=\"" + dir.file("rows.cdb/time=1.5_phi=30.exr") + "\"");
+}
+
+// --foreach and the editor's browser choose the entry by its row number;
+// it overrides `parameters`, and a number past the last row is refused.
+TEST(CinemaReader, EntryChoosesTheRowByNumber) {
+    test::TempDir dir;
+    {
+        CinemaWriter w(dir.file("rows.cdb"), {"time"});
+        for (const double t : {0.5, 1.5, 2.5}) {
+            auto img = test::makeImage(2, 1, {"Z"}, [t](int, int, int) { return float(t); });
+            w.addEntry({{"time", CinemaValue(t)}}, *img);
+        }
+        w.finish();
+    }
+    auto f = test::pluginRegistry().createFilter("CinemaReader");
+    const auto read = [&](std::int64_t entry) {
+        return runFilter(*f, {{"database", {Value(dir.file("rows.cdb"))}},
+                              {"entry", {Value(entry)}},
+                              {"parameters", {Value("time=0.5")}}});
+    };
+    const auto r = read(2);
+    EXPECT_EQ(r.outputs.at("image").asImage()->hostFloat("Z")[0], 2.5f);
+    EXPECT_EQ(*r.outputs.at("row").asRow().find("time"), "2.5");
+    EXPECT_EQ(*read(-1).outputs.at("row").asRow().find("time"), "0.5");  // -1: by parameters
+    try {
+        read(3);
+        ADD_FAILURE() << "entry 3 of 3 rows was read";
+    } catch (const Error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("entry 3 is past the last row"));
+        EXPECT_THAT(e.what(), HasSubstr("3 rows, numbered from 0"));
+    }
 }

@@ -77,19 +77,19 @@ void CinemaWriterNode::endSequence(const SequenceInfo&, bool) {
 
 void CinemaWriterNode::execute(Context& ctx) {
     const BufferPtr image = ctx.get(image_);
-    const std::string& rowText = ctx.get(row_);
-    if (rowText.empty())
+    const Row& row = ctx.get(row_);
+    if (row.empty())
         throw Error("'row' is empty: connect CinemaReader's row output (or set row to the entry's parameters, e.g. "
                     "'time=0.5, phi=30')");
     CinemaParameters params;
     std::vector<std::string> columns;
-    for (const auto& [column, value] : parseCinemaRow(rowText)) {
+    for (const auto& [column, value] : row.cells()) {
         if (isCinemaFileColumn(column)) continue;
         columns.push_back(column);
         params.emplace(column, CinemaValue(value));
     }
     if (columns.empty())
-        throw Error("the row '" + rowText + "' has no parameter columns (only FILE columns), so entries could not "
+        throw Error("the row '" + formatRow(row) + "' has no parameter columns (only FILE columns), so entries could not "
                     "be told apart");
     if (ctx.getString(database_.name()).empty())
         throw Error("no database given; set 'database' to the folder to write, e.g. shaded.cdb");

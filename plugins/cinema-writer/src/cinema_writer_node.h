@@ -35,7 +35,7 @@ public:
 
 private:
     ImageIn image_{"image", "What to store: colour (PNG) or any channels (EXR)"};
-    StringIn row_{"row", "",
+    RowIn row_{"row",
                   "The entry's parameters: connect CinemaReader's row (its parameter columns become this "
                   "database's columns; its FILE columns are not copied), or type 'time=0.5, phi=30'"};
     OutputPathIn database_{"database", "",

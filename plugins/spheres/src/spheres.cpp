@@ -25,10 +25,10 @@ void Spheres::execute(Context& ctx) {
     std::string spec = ctx.getString(points_.name());
     if (spec.empty()) throw Error("no point list given; set 'points' to a CSV (x, y, z[, radius, fields]) or mesh file");
     if (hasRowPlaceholders(spec)) {
-        const std::string& row = ctx.get(row_);
+        const Row& row = ctx.get(row_);
         if (row.empty())
             throw Error("'points' (" + spec + ") has placeholders but 'row' is empty; connect CinemaReader's row");
-        spec = fillRowPlaceholders(spec, parseCinemaRow(row), "points");
+        spec = fillRowPlaceholders(spec, row, "points");
     }
     const std::string path = ctx.resolveInputPath(spec);
     ctx.readsFile(path);

@@ -18,7 +18,7 @@ private:
                    "The point list: a CSV with columns x, y, z and optionally radius and fields, or the vertices of "
                    "a .ply/.vtk/.vtp/.vtu/.obj file. {column} placeholders are filled from `row`, e.g. "
                    "{FILE_maxima} for the list a capture stored beside each entry"};
-    StringIn row_{"row", "", "The Cinema row for placeholders in `points` (connect CinemaReader's row)"};
+    RowIn row_{"row", "The Cinema row for placeholders in `points` (connect CinemaReader's row)"};
     FloatIn radius_{"radius", 0.02, 0.0, 1e9, "Radius in world units for points the file gives none"};
     FloatIn radiusScale_{"radiusScale", 1.0, 0.0, 1e9, "Multiplies every radius (the file's or `radius`)"};
     ImageOut result_{"image",

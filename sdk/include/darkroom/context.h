@@ -83,6 +83,7 @@ public:
     Color get(const ColorIn& p) const { return getColor(p.name()); }
     Vec3 get(const Vec3In& p) const { return getVec3(p.name()); }
     const std::string& get(const StringIn& p) const { return getString(p.name()); }
+    const Row& get(const RowIn& p) const { return value(p.name()).asRow(); }
     // A preset name as is; a file path resolved against the pipeline's folder.
     std::string get(const ColorMapIn& p) const;
     // Resolved against the pipeline's folder; empty stays empty.

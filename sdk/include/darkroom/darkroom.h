@@ -12,6 +12,7 @@
 #include <darkroom/plugin.h>
 #include <darkroom/port.h>
 #include <darkroom/registrar.h>
+#include <darkroom/row.h>
 #include <darkroom/scene.h>
 #include <darkroom/value.h>
 #include <darkroom/version.h>

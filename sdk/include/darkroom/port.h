@@ -66,6 +66,7 @@ struct DARKROOM_API PortList {
     PortSpec& stringIn(std::string name, std::string def, std::string doc);
     PortSpec& pathIn(std::string name, std::string def, std::string doc);
     PortSpec& outputPathIn(std::string name, std::string def, std::string doc);
+    PortSpec& rowIn(std::string name, std::string doc);
 
     PortSpec& imageOut(std::string name, std::string doc, std::vector<std::string> channels = {});
     PortSpec& valueOut(std::string name, PortType type, std::string doc);
@@ -182,6 +183,15 @@ struct OutputPathIn : PortHandle {
     OutputPathIn(std::string name, std::string def, std::string doc)
         : PortHandle(std::move(name), PortType::OutputPath, std::move(doc)) {
         spec.defaultValue = std::move(def);
+    }
+};
+// The entry being shaded (row.h): connected to a database reader's row
+// output, or typed as "phi=30, theta=45"; empty by default. A node with a
+// connected row input and an OutputPath is a database writer to the batch
+// workflow, which then leaves its path alone (the node names its entries).
+struct RowIn : PortHandle {
+    RowIn(std::string name, std::string doc) : PortHandle(std::move(name), PortType::Row, std::move(doc)) {
+        spec.defaultValue = Row();
     }
 };
 // One of a fixed set of choices, read as the enum E:

@@ -2,6 +2,7 @@
 #include <darkroom/buffer.h>
 #include <darkroom/export.h>
 #include <darkroom/math.h>
+#include <darkroom/row.h>
 
 #include <cstdint>
 #include <string>
@@ -26,6 +27,9 @@ enum class PortType : std::uint8_t {
     // --output folder (else the pipeline's), and never over what a node
     // upstream read. Batch shading renames it per entry.
     OutputPath,
+    // One entry of a table (row.h): what a database reader says it read and
+    // what a database writer files its product under.
+    Row,
 };
 
 DARKROOM_API const char* toString(PortType t);
@@ -37,12 +41,12 @@ struct Color {
     bool operator==(const Color&) const = default;
 };
 
-// The value flowing through a port. Enum, ColorMap, String and Path all hold a
-// std::string; the port's type says how to interpret it.
+// The value flowing through a port. Enum, ColorMap, String, Path and
+// OutputPath all hold a std::string; the port's type says how to interpret it.
 class DARKROOM_API Value {
 public:
     using Storage = std::variant<std::monostate, bool, std::int64_t, double, std::string, Color,
-                                 Vec3, BufferPtr>;
+                                 Vec3, BufferPtr, Row>;
 
     Value() = default;
     Value(bool b) : v_(b) {}
@@ -54,6 +58,7 @@ public:
     Value(Color c) : v_(c) {}
     Value(Vec3 v) : v_(v) {}
     Value(BufferPtr b) : v_(std::move(b)) {}
+    Value(Row r) : v_(std::move(r)) {}
 
     bool empty() const { return std::holds_alternative<std::monostate>(v_); }
     const Storage& storage() const { return v_; }
@@ -67,6 +72,7 @@ public:
     Color asColor() const;
     Vec3 asVec3() const;
     const BufferPtr& asImage() const;
+    const Row& asRow() const;
 
     bool operator==(const Value& o) const;
 
@@ -75,7 +81,8 @@ private:
 };
 
 // Text form used by pipeline files and `--set`: numbers in shortest round-trip
-// form, bools as true/false, colours and vectors as "[r, g, b, a]" / "[x, y, z]".
+// form, bools as true/false, colours and vectors as "[r, g, b, a]" / "[x, y, z]",
+// rows as "time=0.5, phi=30" (row.h).
 DARKROOM_API std::string formatValue(PortType type, const Value& v);
 // Parses text into a value of `type`; throws darkroom::Error saying what was expected.
 DARKROOM_API Value parseValue(PortType type, std::string_view text);

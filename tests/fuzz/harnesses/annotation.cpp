@@ -12,6 +12,7 @@
 #include <darkroom/text/text_limits.h>
 
 #include <darkroom/error.h>
+#include <darkroom/row.h>
 
 #include <string>
 
@@ -23,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string row = input.substr(0, newline);
     const std::string text = newline == std::string::npos ? "" : input.substr(newline + 1);
     try {
-        const std::string out = darkroom::annotation::expandText(text, row, markup);
+        const std::string out = darkroom::annotation::expandText(text, darkroom::parseRow(row), markup);
         fuzz::expect(out.size() <= darkroom::text::kMaxTextBytes, "the text is within the limit");
         if (markup && text.find_first_of("<>&'\"") == std::string::npos) {
             fuzz::expect(out.find_first_of("<>'\"") == std::string::npos, "values are escaped");

@@ -3,6 +3,9 @@
 #include <darkroom/core/graph.h>
 #include <gtest/gtest.h>
 
+#include <type_traits>
+#include <utility>
+
 using namespace darkroom;
 
 namespace {
@@ -97,19 +100,53 @@ TEST(Graph, ParametersAreCheckedAgainstPorts) {
     EXPECT_DOUBLE_EQ(g.node("src")->parameter("value")->asFloat(), 2.0);
 }
 
-TEST(Graph, MutationsBumpOnlyTheTouchedNode) {
+TEST(Graph, ChangesOfWhatRunsBumpTheRevisionAndNothingElseDoes) {
     Graph g(testfilters::registry());
     g.addNode("src", "TestSource");
     g.addNode("noise", "TestNoise");
     g.connect({"src", "image"}, {"noise", "image"});
-    const auto srcV = g.node("src")->version;
-    const auto noiseV = g.node("noise")->version;
+    const auto before = g.revision();
     g.setParameter("noise", "seed", Value(3));
-    EXPECT_EQ(g.node("src")->version, srcV);
-    EXPECT_NE(g.node("noise")->version, noiseV);
-    const auto again = g.node("noise")->version;
+    const auto changed = g.revision();
+    EXPECT_GT(changed, before);
     g.setParameter("noise", "seed", Value(3));  // same value: no change
-    EXPECT_EQ(g.node("noise")->version, again);
+    EXPECT_EQ(g.revision(), changed);
+    // Layout and source positions are not part of what runs.
+    g.setExtra("noise", "ui", "{position: [1, 2]}");
+    g.setSourceLocation("noise", 4, 3);
+    EXPECT_EQ(g.revision(), changed);
+    EXPECT_EQ(g.node("noise")->extras.at(0).second, "{position: [1, 2]}");
+    EXPECT_EQ(g.node("noise")->line, 4);
+    g.setExtra("noise", "ui", "{position: [5, 6]}");  // replaced in place
+    ASSERT_EQ(g.node("noise")->extras.size(), 1u);
+    EXPECT_EQ(g.node("noise")->extras.at(0).second, "{position: [5, 6]}");
+    g.setExtra("noise", "ui", "");  // removed
+    EXPECT_TRUE(g.node("noise")->extras.empty());
+    EXPECT_THROW(g.setExtra("nowhere", "ui", "x"), Error);
+    EXPECT_THROW(g.setRawParameter("noise", "seed", "3"), Error);  // not a placeholder
+}
+
+// Nodes are read-only outside the graph: every change goes through a
+// mutator, so the name index and the edges cannot be bypassed.
+static_assert(std::is_same_v<decltype(std::declval<Graph&>().node("x")), const Node*>);
+static_assert(std::is_same_v<decltype(std::declval<Graph&>().addNode("x", "y")), const Node&>);
+
+TEST(Graph, ACopiedNodeKeepsItsParametersExtrasAndPosition) {
+    Graph a(testfilters::registry());
+    a.addNode("noise", "TestNoise");
+    a.setParameter("noise", "seed", Value(7));
+    a.setExtra("noise", "ui", "{position: [1, 2]}");
+    a.setSourceLocation("noise", 3, 5);
+    a.addPlaceholder("later", "FromAPluginNotLoaded");
+    a.setRawParameter("later", "strength", "0.5");
+    Graph b(testfilters::registry());
+    for (const Node& n : a.nodes()) b.addCopy(n);
+    EXPECT_EQ(b.node("noise")->parameter("seed")->asInt(), 7);
+    EXPECT_EQ(b.node("noise")->extras, a.node("noise")->extras);
+    EXPECT_EQ(b.node("noise")->line, 3);
+    EXPECT_TRUE(b.node("later")->placeholder);
+    EXPECT_EQ(b.node("later")->rawParameters.at("strength"), "0.5");
+    EXPECT_THROW(b.addCopy(*a.node("noise")), Error);  // the name is taken
 }
 
 TEST(Graph, RemoveNodeDropsItsEdges) {

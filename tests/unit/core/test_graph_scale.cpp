@@ -72,9 +72,12 @@ TEST(GraphScale, IndexFollowsRemovalsAndRenames) {
     g.connect({"a", "image"}, {"middle", "image"});
     g.connect({"middle", "image"}, {"c", "image"});
     EXPECT_TRUE(g.validate().empty());
-    // A node renamed through the pointer node() returns is still found.
-    g.node("a")->name = "source";
+    // Renamed only through the graph (nodes are handed out const), so the
+    // index follows and the edges keep their ends.
+    g.renameNode("a", "source");
     ASSERT_NE(g.node("source"), nullptr);
+    EXPECT_EQ(g.node("a"), nullptr);
+    EXPECT_EQ(g.edgesInto("middle").at(0).from.node, "source");
 }
 
 // The evaluator walks what a target needs with a stack of its own: it used to

@@ -74,7 +74,8 @@ TEST(BatchWorkflow, ShadesEveryEntryIntoTheDatabaseAndWritesTheIndex) {
     EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 3u);
     EXPECT_EQ(test::readText(b.dir.file("out/index.csv")),
               "time,FILE\n1,shaded.cdb/time=1.exr\n2,shaded.cdb/time=2.exr\n3,shaded.cdb/time=3.exr\n");
-    // The batch's edits of the graph (each entry's parameters) are undone.
+    // The batch's edits of the graph (each entry's row number) are undone.
+    EXPECT_EQ(b.graph.node("read")->parameter("entry"), nullptr);
     EXPECT_EQ(b.graph.node("read")->parameter("parameters"), nullptr);
 }
 
@@ -98,8 +99,13 @@ TEST(BatchWorkflow, WhatIsRefusedIsAnInputErrorBeforeAnyShading) {
     s.where = "time > 5";
     EXPECT_THROW(b.shade(s), InputError);
     s.where.clear();
-    s.reader = "write";
-    EXPECT_THROW(b.shade(s), InputError);
+    s.reader = "write";  // not an entry reader: it has no row output
+    try {
+        b.shade(s);
+        FAIL() << "a writer was taken for a reader";
+    } catch (const InputError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("expected the name of a node that reads a database entry by entry"));
+    }
     // The database written over the one read (D1 of issue 26).
     b.graph.setParameter("write", "database", Value(b.dir.file("source.cdb")));
     try {
@@ -110,6 +116,19 @@ TEST(BatchWorkflow, WhatIsRefusedIsAnInputErrorBeforeAnyShading) {
     }
     EXPECT_EQ(CinemaDatabase::open(b.dir.file("source.cdb")).rowCount(), 3u);
     EXPECT_FALSE(fs::exists(b.dir.file("out/shaded.cdb")));
+}
+
+// The reader is driven by its row number, which overrides a choice by
+// values the pipeline was saved with (the editor's browser writes one);
+// the nodes fed its row see each entry's typed row.
+TEST(BatchWorkflow, TheReaderGetsEachEntrysRowNumberOverItsParameters) {
+    Batch b;
+    b.graph.setParameter("read", "parameters", Value(std::string("time=2")));
+    ASSERT_FALSE(b.shade().failure);
+    const CinemaDatabase out = CinemaDatabase::open(b.dir.file("out/shaded.cdb"));
+    ASSERT_EQ(out.rowCount(), 3u);
+    for (std::size_t r = 0; r < 3; ++r) EXPECT_EQ(out.cell(r, out.column("time")), std::to_string(r + 1));
+    EXPECT_EQ(b.graph.node("read")->parameter("parameters")->asString(), "time=2");  // left as it was
 }
 
 TEST(BatchWorkflow, AFailingEntryIsReportedWithTheEntryAndTheRestIsKept) {

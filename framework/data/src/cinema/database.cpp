@@ -3,6 +3,7 @@
 #include <darkroom/data/cinema/database.h>
 #include <darkroom/strings.h>
 #include <darkroom/data/cinema/naming.h>
+#include <darkroom/row.h>
 
 #include <fmt/format.h>
 
@@ -193,41 +194,7 @@ std::string CinemaDatabase::productPath(std::size_t row, std::string_view fileCo
 
 std::vector<CinemaConstraint> CinemaDatabase::parseQuery(std::string_view query) {
     std::vector<CinemaConstraint> out;
-    std::size_t i = 0;
-    while (i < query.size()) {
-        // One "name=value" item up to the next comma outside quotes.
-        std::string item;
-        bool quoted = false;
-        for (; i < query.size(); ++i) {
-            const char c = query[i];
-            if (c == '"') quoted = !quoted;
-            if (c == ',' && !quoted) break;
-            item += c;
-        }
-        ++i;
-        if (quoted)
-            throw Error(fmt::format("query '{}': unterminated quote; expected name=\"value\"", query));
-        const std::string_view t = trimBlanks(item);
-        if (t.empty()) continue;
-        const std::size_t eq = t.find('=');
-        if (eq == std::string_view::npos || trimBlanks(t.substr(0, eq)).empty())
-            throw Error(fmt::format("query '{}': '{}' is not of the form name=value (e.g. "
-                                    "'phi=30, theta=45')",
-                                    query, t));
-        CinemaConstraint k;
-        k.column = std::string(trimBlanks(t.substr(0, eq)));
-        std::string_view v = trimBlanks(t.substr(eq + 1));
-        if (v.size() >= 2 && v.front() == '"' && v.back() == '"') {
-            v = v.substr(1, v.size() - 2);
-            for (std::size_t j = 0; j < v.size(); ++j) {
-                k.value += v[j];
-                if (v[j] == '"' && j + 1 < v.size() && v[j + 1] == '"') ++j;  // "" is one quote
-            }
-        } else {
-            k.value = std::string(v);
-        }
-        out.push_back(std::move(k));
-    }
+    for (auto& [column, value] : parseNameValues(query, "query")) out.push_back({std::move(column), std::move(value)});
     return out;
 }
 

@@ -1,4 +1,4 @@
-// Row text (see row.h): formatting, parsing and placeholder filling.
+// A database row as a typed row, and placeholder filling (row.h).
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/csv.h>
 #include <darkroom/data/cinema/database.h>
@@ -8,29 +8,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <set>
 
 namespace darkroom {
 
 namespace {
-
-std::string quoteRowValue(const std::string& v) {
-    const bool plain = v.find_first_of(",=\"") == std::string::npos &&
-                       (v.empty() || (v.front() != ' ' && v.back() != ' ' && v.front() != '\t' && v.back() != '\t'));
-    if (plain) return v;
-    std::string out = "\"";
-    for (char c : v) {
-        if (c == '"') out += '"';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string columnList(const CinemaRow& row) {
-    std::string s;
-    for (const auto& [k, v] : row) s += (s.empty() ? "" : ", ") + k;
-    return s.empty() ? std::string("none") : s;
-}
 
 // One placeholder's text: the cell as written, or formatted with `spec`.
 std::string formatCell(const std::string& cell, const std::string& spec, std::string_view what,
@@ -64,9 +45,9 @@ std::string formatCell(const std::string& cell, const std::string& spec, std::st
 
 }  // namespace
 
-std::string cinemaRowText(const CinemaDatabase& db, std::size_t row) {
-    CinemaRow cells;
-    for (std::size_t c : db.parameterColumns()) cells.emplace_back(db.columns()[c].name, db.cell(row, c));
+Row cinemaRow(const CinemaDatabase& db, std::size_t row) {
+    std::vector<RowCell> cells;
+    for (std::size_t c : db.parameterColumns()) cells.push_back({db.columns()[c].name, db.cell(row, c)});
     for (std::size_t c : db.fileColumns()) {
         const std::string& name = db.columns()[c].name;
         std::string path;
@@ -75,26 +56,9 @@ std::string cinemaRowText(const CinemaDatabase& db, std::size_t row) {
             const std::filesystem::path p = std::filesystem::absolute(db.productPath(row, name), ec);
             path = (ec ? std::filesystem::path(db.productPath(row, name)) : p).lexically_normal().string();
         }
-        cells.emplace_back(name, path);
+        cells.push_back({name, path});
     }
-    return formatCinemaRow(cells);
-}
-
-std::string formatCinemaRow(const CinemaRow& row) {
-    std::string out;
-    for (const auto& [k, v] : row) out += (out.empty() ? "" : ", ") + k + "=" + quoteRowValue(v);
-    return out;
-}
-
-CinemaRow parseCinemaRow(std::string_view text) {
-    CinemaRow row;
-    std::set<std::string> seen;
-    for (auto& c : CinemaDatabase::parseQuery(text)) {
-        if (!seen.insert(c.column).second)
-            throw Error(fmt::format("row '{}': column '{}' is given twice", text, c.column));
-        row.emplace_back(std::move(c.column), std::move(c.value));
-    }
-    return row;
+    return Row(std::move(cells));
 }
 
 bool hasRowPlaceholders(std::string_view pattern) {
@@ -109,7 +73,7 @@ bool hasRowPlaceholders(std::string_view pattern) {
     return false;
 }
 
-std::string fillRowPlaceholders(std::string_view pattern, const CinemaRow& row, std::string_view what) {
+std::string fillRowPlaceholders(std::string_view pattern, const Row& row, std::string_view what) {
     std::string out;
     for (std::size_t i = 0; i < pattern.size(); ++i) {
         const char c = pattern[i];
@@ -141,12 +105,10 @@ std::string fillRowPlaceholders(std::string_view pattern, const CinemaRow& row, 
         while (!name.empty() && name.back() == ' ') name.pop_back();
         while (!name.empty() && name.front() == ' ') name.erase(name.begin());
         const std::string spec = colon == std::string_view::npos ? "" : std::string(inside.substr(colon + 1));
-        const std::string* cell = nullptr;
-        for (const auto& [k, v] : row)
-            if (k == name) cell = &v;
+        const std::string* cell = row.find(name);
         if (!cell)
             throw Error(fmt::format("{}: placeholder {{{}}} names no column of the row (columns: {})", what, inside,
-                                    columnList(row)));
+                                    row.columnNames()));
         out += formatCell(*cell, spec, what, inside);
         i = close;
     }

@@ -31,6 +31,9 @@ struct Edge {
 // A node: an instance of a registered type with parameter values for its
 // unconnected value inputs. A node whose type is not registered is kept as a
 // placeholder with its raw parameter text, so nothing is dropped on save.
+// A node as the graph holds it. Read-only outside the graph: Graph hands out
+// const nodes only, and every change goes through its mutators, which keep
+// the name index, the edges and the revision right.
 struct Node {
     std::string name;
     std::string type;
@@ -43,7 +46,6 @@ struct Node {
     // Editor layout and other per-node keys the host does not interpret,
     // preserved as YAML text.
     std::vector<std::pair<std::string, std::string>> extras;
-    std::uint64_t version = 0;  // bumped by every change to this node
     // Source position in the pipeline file (1-based; 0 if built in code).
     int line = 0, column = 0;
 
@@ -55,9 +57,8 @@ struct Node {
 };
 
 // The node graph: nodes, typed connections, and the checks that must pass
-// before anything runs. Every mutation bumps the affected node's version, which
-// is what the evaluator's cache keys on: a change invalidates that node and,
-// through the version chain, everything downstream.
+// before anything runs. Every change of what runs (nodes, parameters, edges)
+// bumps revision(); the evaluator's cache keys on the values themselves.
 class DARKROOM_API Graph {
 public:
     explicit Graph(const Registry& registry);
@@ -66,14 +67,27 @@ public:
 
     // Throws darkroom::Error on duplicate names or (for non-placeholders)
     // an unknown type.
-    Node& addNode(const std::string& name, const std::string& type);
-    Node& addPlaceholder(const std::string& name, const std::string& type);
+    const Node& addNode(const std::string& name, const std::string& type);
+    const Node& addPlaceholder(const std::string& name, const std::string& type);
+    // A node of another graph with the same registry, as it is there
+    // (parameters, extras, source position); throws like addNode.
+    const Node& addCopy(const Node& node);
     void removeNode(const std::string& name);  // also removes its edges
     void renameNode(const std::string& from, const std::string& to);
 
     // Checks the value against the port (type, range, choices); throws darkroom::Error.
     void setParameter(const std::string& node, const std::string& port, Value value);
     void clearParameter(const std::string& node, const std::string& port);
+    // A placeholder's parameter as the pipeline file's YAML text, kept for saving.
+    void setRawParameter(const std::string& node, const std::string& port, std::string yamlText);
+
+    // Keys the host does not interpret (editor layout), as YAML text: set or
+    // replaced in place, removed when `yamlText` is empty. Not part of what
+    // runs, so revision() is unchanged.
+    void setExtra(const std::string& node, const std::string& key, const std::string& yamlText);
+    void clearExtras(const std::string& node);
+    // Where the node was written in the pipeline file, for messages.
+    void setSourceLocation(const std::string& node, int line, int column);
 
     // Checks both ports exist, directions, types, and that the input is free
     // (unless it accepts multiple); throws darkroom::Error with the reason.
@@ -86,7 +100,6 @@ public:
 
     const std::vector<Node>& nodes() const { return nodes_; }
     const Node* node(const std::string& name) const;
-    Node* node(const std::string& name);
     const std::vector<Edge>& edges() const { return edges_; }
     std::vector<Edge> edgesInto(const std::string& node, const std::string& port) const;
     std::vector<Edge> edgesInto(const std::string& node) const;
@@ -115,16 +128,13 @@ public:
     std::uint64_t revision() const { return revision_; }
 
 private:
-    void touch(Node& n);
+    void touch();
     // Rebuilds the lookup tables below after a removal or rename; additions
     // extend them. They are never changed by const methods, so concurrent
     // readers (the evaluator's workers) may share a graph.
     void reindex();
-    const Node* findNode(const std::string& name) const;
-    // Folds renames made through handed-out Node pointers or references into
-    // the index (non-const: readers never change the tables).
-    void resync();
-    Node* handOut(std::size_t i);
+    // The node to change; throws darkroom::Error when there is none.
+    Node& mutableNode(const std::string& name);
     bool closesCycle(const std::string& from, const std::string& to) const;
     using EdgeIndex = std::unordered_map<std::string, std::vector<std::size_t>>;
     std::set<std::string> reachable(const std::vector<std::string>& from, const EdgeIndex& index,
@@ -137,14 +147,17 @@ private:
     // (a 5,000-node chain) rather than quadratic or worse.
     std::unordered_map<std::string, std::size_t> nodeIndex_;
     std::unordered_map<std::string, std::vector<std::size_t>> edgesFrom_, edgesTo_;
-    // Nodes handed out as mutable since the last resync, with the name each
-    // had then: a caller may rename one through the pointer.
-    std::vector<std::pair<std::size_t, std::string>> handedOut_;
     std::uint64_t revision_ = 0;
     std::uint64_t counter_ = 0;
 };
 
 // Whether an output of type `from` may feed an input of type `to`.
 DARKROOM_API bool compatible(PortType from, PortType to);
+
+// The value as an input of `type` takes it: an integer given to a float port
+// widened, a row given as its text ("phi=30, theta=45") parsed — so a
+// pipeline, a test or a script may type a row. Throws darkroom::Error on
+// bad row text; anything else is returned as is for checkValue to judge.
+DARKROOM_API Value asPortValue(PortType type, Value v);
 
 }  // namespace darkroom

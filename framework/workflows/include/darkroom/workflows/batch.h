@@ -11,7 +11,7 @@
 // reaches and those that read what a per-entry sink wrote (a Movie connected
 // to CinemaWriter's `written`, which then reads the finished database: the
 // batch replaces that edge by the database's path). Every edit the batch
-// makes to `graph` (the entry's parameters, staging paths, that edge) is
+// makes to `graph` (the reader's entry, staging paths, that edge) is
 // undone when it returns: the caller keeps the pipeline it had. Over several processes the entries are
 // handed out by the group's work queue, each process writes the databases
 // into staging databases of its own and the lead merges them
@@ -33,7 +33,7 @@
 namespace darkroom::workflows {
 
 struct BatchSettings {
-    std::string reader;  // the CinemaReader node, whose `database` and `parameters` the batch sets
+    std::string reader;  // the entry reader (CinemaReader), whose `entry` the batch sets (entry_ports.h)
     std::string where;   // the entries to shade (--where syntax); empty: all
     std::string index;   // the index CSV to write; empty: none
     bool resume = false;

@@ -11,9 +11,9 @@
 
 namespace darkroom::workflows {
 
-// The description of the pipeline upstream of `sink`. The `parameters` of a
-// reader (a node with a `database` path input) are left out: they select the
-// entry, which --foreach changes per entry and a resume adds to.
+// The description of the pipeline upstream of `sink`. The inputs by which an
+// entry reader (CinemaReader) chooses its entry, `entry` and `parameters`,
+// are left out: --foreach changes them per entry and a resume adds entries.
 DARKROOM_API std::string upstreamPipeline(const Graph& g, const std::string& sink);
 
 // Sets `pipeline` on every node that has such a string input, unless an edge

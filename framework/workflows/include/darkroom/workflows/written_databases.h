@@ -26,7 +26,7 @@ struct DatabaseSink {
     std::string pipeline;  // what the node records as its upstream pipeline (pipeline_record.h), when it does
 };
 
-// The sinks among `sinks` with a connected `row` input and an output-path
+// The sinks among `sinks` with a connected Row input and an output-path
 // input (PortType::OutputPath), the database they write. One whose database comes through an edge is left to itself
 // alone, and refused (Error) over ranks, where it could not be staged.
 DARKROOM_API std::vector<DatabaseSink> databaseSinks(const Graph& graph, const std::vector<std::string>& sinks,
