@@ -4,7 +4,8 @@
 # check that a refactoring changed no output (issue 27). Each build's plugins
 # are its own (<build>/lib/darkroom/plugins).
 #   scripts/compare-outputs.sh OLD_BUILD NEW_BUILD [WORK_DIR]
-# Prints one line per file that differs and exits 1 if any does.
+# Prints one line per file that differs and exits 1 if any does. With one
+# build, tests/examples/check_example_outputs.sh compares against a manifest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=$(cd "$1" && pwd)
@@ -12,40 +13,15 @@ new=$(cd "$2" && pwd)
 work=${3:-$(mktemp -d)}
 mkdir -p "$work"
 
-run_all() {  # BUILD OUT
-  local darkroom="$1/bin/darkroom" out=$2
-  # Scenes and pipelines name ../../out/... and ../../../shared/...: they run
-  # from a copy of docs/examples placed so that those lead to this build's
-  # outputs and to the shared data.
-  mkdir -p "$out/demo" "$out/volume" "$out/publish" "$out/gallery" "$out/tree/docs"
-  cp -r "$root/docs/examples" "$out/tree/docs/examples"
-  ln -sfn "$out" "$out/tree/out"
-  ln -sfn "$root/../shared" "$out/shared"
-  local ex="$out/tree/docs/examples"
-  for part in surface flow particles; do
-    "$darkroom" -q capture "$ex/demo/$part.yaml" -o "$out/demo/$part.cdb"
-  done
-  "$darkroom" -q capture "$ex/publish/teaser-scene.yaml" -o "$out/publish/teaser.cdb"
-  if [ -f "$work/blobs.vtu" ]; then
-    cp -p "$work/blobs.vtu" "$out/volume/blobs.vtu"  # same time: the marker records it
-    "$darkroom" -q capture "$ex/volume/tetrahedra.yaml" -o "$out/volume/tetrahedra.cdb"
-  fi
-  for pipeline in "$ex"/*.yaml "$ex"/ttk/*.yaml "$ex"/volume/volume-*.yaml "$ex"/publish/*.yaml; do
-    name=$(basename "$pipeline" .yaml)
-    case "$name" in
-      teaser-scene) continue ;;
-      foreach-*) "$darkroom" -q run "$pipeline" --foreach read --output "$out/publish" || echo "FAILED: $name" ;;
-      *) "$darkroom" -q run "$pipeline" --output "$out/gallery" || echo "FAILED: $name" ;;
-    esac
-  done
-}
+# run_all ROOT BUILD OUT [BLOBS_VTU]: every capture scene and example pipeline.
+source "$root/scripts/run-examples.sh"
 
 python3 "$root/docs/examples/volume/make_tetrahedra.py" "$work/blobs.vtu" 2>/dev/null || true
 # Both builds write into the same folder ($work/run, then moved), since
 # databases record the paths of the files they were made from.
-run_all "$old" "$work/run" > "$work/old.log" 2>&1 || true
+run_all "$root" "$old" "$work/run" "$work/blobs.vtu" > "$work/old.log" 2>&1 || true
 mv "$work/run" "$work/old"
-run_all "$new" "$work/run" > "$work/new.log" 2>&1 || true
+run_all "$root" "$new" "$work/run" "$work/blobs.vtu" > "$work/new.log" 2>&1 || true
 mv "$work/run" "$work/new"
 status=0
 count=0

@@ -20,8 +20,9 @@ packages=(
   # virtual X server for the GUI tests
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-qpa-plugins libgl-dev
   libgl1-mesa-dri fonts-dejavu-core xvfb xauth
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks; python3 writes the volume example's mesh and
+  # normalises the examples' outputs (tests/examples/check_example_outputs.sh)
+  libgtest-dev libgmock-dev libbenchmark-dev python3
   # scale-out: MPI (mpirun runs the distributed tests) and the in situ API's
   # Fortran module (docs/scale-out.md)
   libopenmpi-dev openmpi-bin gfortran
