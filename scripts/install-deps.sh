@@ -26,6 +26,9 @@ packages=(
   # scale-out: MPI (mpirun runs the distributed tests) and the in situ API's
   # Fortran module (docs/scale-out.md)
   libopenmpi-dev openmpi-bin gfortran
+  # the Python module (python/, docs/python.md): pybind11, NumPy, pytest for
+  # its tests, nbclient and ipykernel to run the example notebook
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-ipykernel
   # SIMD kernels (plugins/ssao)
   libhwy-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)

@@ -1,0 +1,51 @@
+# The Python module `darkroom` (python/, docs/python.md): pybind11 over the
+# same core, data and workflows libraries as the runner and the editor.
+#
+# DARKROOM_WITH_PYTHON (ON by default). It is part of what CI tests, so with
+# tests enabled a missing piece stops configuration and names the Debian
+# package; without tests a warning says what is left out. The interpreter is
+# the one CMake finds first; point -DPython3_EXECUTABLE=... at another (a
+# pyenv or conda interpreter lacks Debian's python3-numpy).
+option(DARKROOM_WITH_PYTHON "Build the Python module (pybind11, NumPy)" ON)
+
+function(_darkroom_python_missing what)
+  if(DARKROOM_BUILD_TESTS)
+    message(FATAL_ERROR "${what}")
+  else()
+    message(WARNING "${what}. Built without the Python module.")
+  endif()
+endfunction()
+
+if(DARKROOM_WITH_PYTHON)
+  find_package(Python3 3.9 QUIET COMPONENTS Interpreter Development.Module NumPy)
+  find_package(pybind11 2.6 QUIET CONFIG)
+  set(_python_missing "")
+  if(NOT Python3_Interpreter_FOUND)
+    list(APPEND _python_missing "python3")
+  endif()
+  if(NOT Python3_Development.Module_FOUND)
+    list(APPEND _python_missing "python3-dev")
+  endif()
+  if(NOT Python3_NumPy_FOUND)
+    list(APPEND _python_missing "python3-numpy")
+  endif()
+  if(NOT pybind11_FOUND)
+    list(APPEND _python_missing "pybind11-dev")
+  endif()
+  if(DARKROOM_BUILD_TESTS AND Python3_Interpreter_FOUND)
+    execute_process(COMMAND ${Python3_EXECUTABLE} -c "import pytest" RESULT_VARIABLE _no_pytest
+                    OUTPUT_QUIET ERROR_QUIET)
+    if(_no_pytest)
+      list(APPEND _python_missing "python3-pytest")
+    endif()
+  endif()
+  if(_python_missing)
+    list(JOIN _python_missing " " _packages)
+    _darkroom_python_missing(
+      "The Python module needs the Debian packages: ${_packages} (for the interpreter "
+      "${Python3_EXECUTABLE}; apt-get install ${_packages}, or run scripts/install-deps.sh as root; "
+      "-DPython3_EXECUTABLE=/usr/bin/python3 picks Debian's interpreter; -DDARKROOM_WITH_PYTHON=OFF "
+      "builds without the module)")
+    set(DARKROOM_WITH_PYTHON OFF)
+  endif()
+endif()
