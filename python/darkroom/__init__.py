@@ -17,10 +17,13 @@ from . import _darkroom
 from ._darkroom import Camera, Database, DatabaseWriter, Error, Image, InputError, node_types, plugins
 from ._paths import PLUGINS_FROM_PACKAGE as _PLUGINS_FROM_PACKAGE
 from ._capture import CameraGrid, CameraList, Scene, capture
+from ._filters import (BoolIn, ColorIn, EnumIn, Filter, FloatIn, ImageIn, ImageOut, IntIn, StringIn, ValueOut,
+                       register)
 
 __version__ = _darkroom.__version__
 __all__ = ["Camera", "CameraGrid", "CameraList", "Database", "DatabaseWriter", "Error", "Image", "InputError", "Node", "Pipeline",
-           "Port", "Scene", "capture", "node_types", "plugins", "plugin_problems"]
+           "Port", "Scene", "capture", "node_types", "plugins", "plugin_problems", "Filter", "register", "ImageIn",
+           "ImageOut", "FloatIn", "IntIn", "BoolIn", "StringIn", "EnumIn", "ColorIn", "ValueOut"]
 
 
 def _search_path():

@@ -20,5 +20,6 @@ void bindDatabase(pybind11::module_& m);
 void bindPipeline(pybind11::module_& m);
 void bindInsitu(pybind11::module_& m);
 void bindWriter(pybind11::module_& m);
+void bindPythonFilters(pybind11::module_& m);
 
 }  // namespace darkroom::python

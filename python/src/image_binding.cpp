@@ -88,6 +88,22 @@ Image fromArrays(const py::dict& channels, const std::optional<Camera>& camera,
     return Image{out};
 }
 
+// The image's planes shared, the given channels added or replaced (copied
+// in): what a pass written in Python returns, as derive() in C++.
+Image withChannels(const Image& image, const py::dict& channels) {
+    const Image added = fromArrays(channels, std::nullopt, {});
+    const Buffer& in = *image.buffer;
+    if (added.buffer->width() != in.width() || added.buffer->height() != in.height())
+        throw py::value_error("with_channels: the arrays are " + std::to_string(added.buffer->height()) + " x " +
+                              std::to_string(added.buffer->width()) + ", the image " + std::to_string(in.height()) +
+                              " x " + std::to_string(in.width()));
+    auto out = makeHostBuffer(in.width(), in.height());
+    for (const auto& c : in.channels()) out->setPlane(c, in.plane(c.name));
+    for (const auto& c : added.buffer->channels()) out->setPlane(c, added.buffer->plane(c.name));
+    out->metadata() = in.metadata();
+    return Image{out};
+}
+
 py::bytes png(const Image& image) {
     // Through the data library's writer (what a PNG CinemaWriter writes), by
     // way of a private temporary file.
@@ -131,6 +147,9 @@ void bindImage(py::module_& m) {
                     py::arg("metadata") = std::map<std::string, std::string>{},
                     "An image from 2-D arrays of one shape, {name: array}; float32 channels, or uint32 for "
                     "unsigned or 32-bit integer arrays (ids). The arrays are copied")
+        .def("with_channels", &withChannels, py::arg("channels"),
+             "A new image with this one's channels (shared, not copied) and `channels` {name: array} added or "
+             "replaced")
         .def_property_readonly("width", [](const Image& i) { return i.buffer->width(); })
         .def_property_readonly("height", [](const Image& i) { return i.buffer->height(); })
         .def_property_readonly("shape", [](const Image& i) { return py::make_tuple(i.buffer->height(), i.buffer->width()); })

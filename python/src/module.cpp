@@ -28,6 +28,7 @@ PYBIND11_MODULE(_darkroom, m) {
     bindPipeline(m);
     bindInsitu(m);
     bindWriter(m);
+    bindPythonFilters(m);
     m.def(
         "load_plugins",
         [](const std::vector<std::string>& searchPath) {
