@@ -29,6 +29,8 @@ packages=(
   # the Python module (python/, docs/python.md): pybind11, NumPy, pytest for
   # its tests, nbclient and ipykernel to run the example notebook
   pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-ipykernel
+  # meshio: the example that captures a mesh of a format Darkroom has no reader for
+  python3-meshio
   # SIMD kernels (plugins/ssao)
   libhwy-dev
   # the SDK ABI check (tests/sdk/check_abi.sh)

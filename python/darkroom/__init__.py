@@ -113,7 +113,7 @@ class Pipeline(_darkroom._Pipeline):
         """A pipeline file, as ``darkroom run`` reads it; relative paths in it
         resolve against its folder."""
         p = cls()
-        p._load(_os.fspath(path))
+        p._load(path)
         return p
 
     def add(self, type, name=None, **parameters):

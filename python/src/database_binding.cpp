@@ -11,6 +11,7 @@
 #include <darkroom/data/cinema/database.h>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
 #include <memory>
@@ -24,8 +25,8 @@ namespace {
 
 class PyDatabase {
 public:
-    explicit PyDatabase(const std::string& path)
-        : db_(std::make_shared<CinemaDatabase>(CinemaDatabase::open(path))),
+    explicit PyDatabase(const std::filesystem::path& path)
+        : db_(std::make_shared<CinemaDatabase>(CinemaDatabase::open(path.string()))),
           path_(std::filesystem::absolute(db_->path()).lexically_normal().string()) {}
 
     const std::string& path() const { return path_; }
@@ -80,7 +81,7 @@ void bindDatabase(py::module_& m) {
     py::class_<PyDatabase>(m, "Database",
                            "A Cinema database (a .cdb folder or its data.csv): its rows, and its entries read as "
                            "images by the CinemaReader node")
-        .def(py::init<const std::string&>(), py::arg("path"))
+        .def(py::init<const std::filesystem::path&>(), py::arg("path"))
         .def_property_readonly("path", &PyDatabase::path, "The .cdb folder, absolute")
         .def("__len__", &PyDatabase::size)
         .def_property_readonly("columns", [](const PyDatabase& d) { return d.columns(true, true); },

@@ -8,6 +8,7 @@
 #include <darkroom/data/image_io.h>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cstring>
 #include <filesystem>
@@ -162,7 +163,7 @@ void bindImage(py::module_& m) {
         .def("to_rgba8", [](const Image& i) { return toRgba8(*i.buffer); },
              "(height, width, 4) uint8: R, G, B sRGB-encoded and A; without colour, the first channel as grey")
         .def("_repr_png_", &png)
-        .def("save", [](const Image& i, const std::string& path) { writeImage(*i.buffer, path); }, py::arg("path"),
+        .def("save", [](const Image& i, const fs::path& path) { writeImage(*i.buffer, path.string()); }, py::arg("path"),
              "Writes the image: EXR keeps every channel and the camera; PNG, JPEG, TIFF the colour")
         .def("__repr__", [](const Image& i) {
             std::string names;

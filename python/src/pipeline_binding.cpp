@@ -10,6 +10,7 @@
 #include <darkroom/core/registry.h>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cctype>
 #include <filesystem>
@@ -26,18 +27,18 @@ class PyPipeline {
 public:
     PyPipeline() : graph_(registry()) {}
 
-    void load(const std::string& path) {
+    void load(const fs::path& path) {
         Diagnostics d;
-        Graph g = loadPipeline(path, registry(), d);
+        Graph g = loadPipeline(path.string(), registry(), d);
         std::string errors;
         for (const auto& x : d)
             if (x.severity == Diagnostic::Severity::Error) errors += (errors.empty() ? "" : "\n") + x.str();
         if (!errors.empty()) throw InputError(errors);
         std::lock_guard<std::mutex> lock(mutex_);
         graph_ = std::move(g);
-        setFolder(fs::absolute(path).parent_path().string());
+        setFolder(fs::absolute(path).parent_path());
     }
-    void save(const std::string& path) const { savePipeline(graph_, path); }
+    void save(const fs::path& path) const { savePipeline(graph_, path.string()); }
     std::string yaml() const { return serializePipeline(graph_); }
 
     std::string add(const std::string& type, const std::string& wanted) {
@@ -127,14 +128,14 @@ public:
             if (p.status == NodeProfile::Status::Ran) out.push_back(p.node);
         return out;
     }
-    void setFolder(const std::string& folder) {
+    void setFolder(const fs::path& folder) {
         EvaluatorOptions o = evaluator_.options();
-        o.inputBase = folder;
+        o.inputBase = folder.string();
         evaluator_.setOptions(o);
     }
-    void setOutput(const std::string& folder) {
+    void setOutput(const fs::path& folder) {
         EvaluatorOptions o = evaluator_.options();
-        o.outputDir = folder;
+        o.outputDir = folder.string();
         evaluator_.setOptions(o);
     }
 

@@ -10,6 +10,7 @@
 #include <darkroom/data/cinema/writer.h>
 
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <memory>
 
@@ -21,7 +22,7 @@ namespace {
 
 class PyWriter {
 public:
-    PyWriter(const std::string& path, const std::vector<std::string>& columns, const std::string& format,
+    PyWriter(const std::filesystem::path& path, const std::vector<std::string>& columns, const std::string& format,
              const std::string& mode) {
         CinemaWriterOptions o;
         if (format != "exr" && format != "png")
@@ -31,7 +32,7 @@ public:
         else if (mode == "resume") o.resume = true;
         else if (mode != "create")
             throw py::value_error("mode: expected 'create', 'overwrite' or 'resume', got '" + mode + "'");
-        writer_ = std::make_unique<CinemaWriter>(path, columns, o);
+        writer_ = std::make_unique<CinemaWriter>(path.string(), columns, o);
     }
     bool has(const py::dict& row) const { return open().hasEntry(parameters(row)); }
     void add(const py::dict& row, const Image& image) {
@@ -71,7 +72,8 @@ void bindWriter(py::module_& m) {
                          "Writes a Cinema database: DatabaseWriter(path, columns, format='exr', mode='create'); "
                          "add(row, image) per entry; finish() (or a with block) ends it. Atomic, locked while "
                          "open; mode 'overwrite' replaces a database Darkroom wrote, 'resume' adds to one")
-        .def(py::init<const std::string&, const std::vector<std::string>&, const std::string&, const std::string&>(),
+        .def(py::init<const std::filesystem::path&, const std::vector<std::string>&, const std::string&,
+                      const std::string&>(),
              py::arg("path"), py::arg("columns"), py::arg("format") = "exr", py::arg("mode") = "create")
         .def("add", &PyWriter::add, py::arg("row"), py::arg("image"),
              "Writes the entry {column: value} (every column, numbers or text) with its image")

@@ -9,6 +9,11 @@ import pytest
 
 import darkroom as dr
 
+# Processes the tests start (scripts, the notebook's kernel) run in other
+# folders: the package's path must not be relative to this one.
+os.environ["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in
+                                           os.environ.get("PYTHONPATH", "").split(os.pathsep) if p)
+
 SHARED = pathlib.Path(os.environ.get("DARKROOM_SHARED_DATA_DIR",
                                      pathlib.Path(__file__).resolve().parents[3] / "shared" / "data"))
 
