@@ -8,7 +8,8 @@
 # pyenv or conda interpreter lacks Debian's python3-numpy).
 option(DARKROOM_WITH_PYTHON "Build the Python module (pybind11, NumPy)" ON)
 
-function(_darkroom_python_missing what)
+function(_darkroom_python_missing)
+  string(CONCAT what ${ARGV})
   if(DARKROOM_BUILD_TESTS)
     message(FATAL_ERROR "${what}")
   else()
@@ -18,7 +19,9 @@ endfunction()
 
 if(DARKROOM_WITH_PYTHON)
   find_package(Python3 3.9 QUIET COMPONENTS Interpreter Development.Module NumPy)
-  find_package(pybind11 2.6 QUIET CONFIG)
+  # pybind11's own package is read only once Python is known (below): with
+  # no Python found it would search for one its own way and fail obscurely.
+  find_path(DARKROOM_PYBIND11_HEADER pybind11/pybind11.h)
   set(_python_missing "")
   if(NOT Python3_Interpreter_FOUND)
     list(APPEND _python_missing "python3")
@@ -29,7 +32,7 @@ if(DARKROOM_WITH_PYTHON)
   if(NOT Python3_NumPy_FOUND)
     list(APPEND _python_missing "python3-numpy")
   endif()
-  if(NOT pybind11_FOUND)
+  if(NOT DARKROOM_PYBIND11_HEADER)
     list(APPEND _python_missing "pybind11-dev")
   endif()
   if(DARKROOM_BUILD_TESTS AND Python3_Interpreter_FOUND)
@@ -41,11 +44,15 @@ if(DARKROOM_WITH_PYTHON)
   endif()
   if(_python_missing)
     list(JOIN _python_missing " " _packages)
+    # (No semicolons in the text: CMake would read them as list separators.)
     _darkroom_python_missing(
-      "The Python module needs the Debian packages: ${_packages} (for the interpreter "
-      "${Python3_EXECUTABLE}; apt-get install ${_packages}, or run scripts/install-deps.sh as root; "
-      "-DPython3_EXECUTABLE=/usr/bin/python3 picks Debian's interpreter; -DDARKROOM_WITH_PYTHON=OFF "
-      "builds without the module)")
+      "The Python module needs the Debian packages ${_packages} for the interpreter "
+      "${Python3_EXECUTABLE}. Install them with apt-get install ${_packages} (or run "
+      "scripts/install-deps.sh as root). -DPython3_EXECUTABLE=/usr/bin/python3 picks Debian's "
+      "interpreter, -DDARKROOM_WITH_PYTHON=OFF builds without the module")
     set(DARKROOM_WITH_PYTHON OFF)
+  else()
+    set(PYBIND11_FINDPYTHON ON)
+    find_package(pybind11 2.6 REQUIRED CONFIG)
   endif()
 endif()

@@ -72,6 +72,27 @@ class Scene:
         r = None if radii is None else _values(radii, len(v), f"{name}: radii")
         self._add("points", name, v, len(v), point_fields, None, radii=r, radius=float(radius))
 
+    def add_file(self, path, name=None, radius=0.01):
+        """The geometry of a mesh file Darkroom reads (.ply .obj .vtk .vtp
+        .vtu .pvtp .pvtu), with its point and cell fields: one object per
+        part ("name/surface", "name/lines", "name/points" when there are
+        several); lines and points get `radius`. Returns the reader's warnings."""
+        import os
+        parts, warnings = _darkroom.read_mesh(path)
+        stem = name or os.path.splitext(os.path.basename(os.fspath(path)))[0]
+        for part in parts:
+            object_name = stem if len(parts) == 1 else f"{stem}/{part['representation']}"
+            kind = part["representation"]
+            if kind == "surface":
+                self.add_triangles(object_name, part["positions"], part["indices"], part["point_fields"],
+                                   part["cell_fields"])
+            elif kind == "lines":
+                self.add_lines(object_name, part["positions"], part["indices"].reshape(-1), radius=radius,
+                               point_fields=part["point_fields"], cell_fields=part["cell_fields"])
+            else:
+                self.add_points(object_name, part["positions"], radius=radius, point_fields=part["point_fields"])
+        return warnings
+
     @property
     def object_names(self):
         return [o["name"] for o in self._objects]

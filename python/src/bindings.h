@@ -21,5 +21,6 @@ void bindPipeline(pybind11::module_& m);
 void bindInsitu(pybind11::module_& m);
 void bindWriter(pybind11::module_& m);
 void bindPythonFilters(pybind11::module_& m);
+void bindMeshes(pybind11::module_& m);
 
 }  // namespace darkroom::python

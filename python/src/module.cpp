@@ -29,6 +29,7 @@ PYBIND11_MODULE(_darkroom, m) {
     bindInsitu(m);
     bindWriter(m);
     bindPythonFilters(m);
+    bindMeshes(m);
     m.def(
         "load_plugins",
         [](const std::vector<std::string>& searchPath) {
