@@ -1,5 +1,5 @@
-// Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI) with the
-// project's own writers, so that no binary file is committed:
+// Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI with the
+// project's own writers; binary STL byte by byte), so that no binary file is committed:
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
 #include "io/exr_file.h"
@@ -10,9 +10,12 @@
 #include <darkroom/data/formats/vti.h>
 #include <darkroom/data/image_io.h>
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace darkroom;
@@ -38,6 +41,24 @@ void writeBytes(const fs::path& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
 }
 
+template <class T>
+void put(std::string& s, T v) {
+    s.append(reinterpret_cast<const char*>(&v), sizeof v);  // the hosts are little-endian, as STL is
+}
+
+// A binary STL: the 80-byte header, the count, then per triangle a normal,
+// three vertices and the 16-bit attribute (50 bytes).
+std::string binaryStl(std::string header, const std::vector<std::array<float, 9>>& triangles) {
+    header.resize(80, ' ');
+    put(header, std::uint32_t(triangles.size()));
+    for (const auto& t : triangles) {
+        for (float n : {0.f, 0.f, 1.f}) put(header, n);
+        for (float v : t) put(header, v);
+        put(header, std::uint16_t(0));
+    }
+    return header;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,7 +67,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    for (const char* d : {"exr", "image", "npy", "npz", "vti"}) fs::create_directories(root / d);
+    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl"}) fs::create_directories(root / d);
     try {
         // EXR: float RGBA with a camera-free G-buffer channel, each compression.
         const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
@@ -106,6 +127,11 @@ int main(int argc, char** argv) {
         writeVti((root / "vti" / "raw.vti").string(), *vtiImage, camera);
         writeVti((root / "vti" / "base64.vti").string(), *vtiImage, camera, {.base64 = true});
         writeVti((root / "vti" / "zlib.vti").string(), *vtiImage, std::nullopt, {.base64 = true, .zlib = true});
+        // Binary STL: one triangle (134 bytes), and two sharing an edge under
+        // a header that starts with "solid" as CAD tools write it.
+        writeBytes(root / "stl" / "one-triangle.stl", binaryStl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}}));
+        writeBytes(root / "stl" / "solid-header.stl",
+                   binaryStl("solid exported", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}}));
     } catch (const std::exception& e) {
         std::cerr << "fuzz_seeds: " << e.what() << "\n";
         return 1;

@@ -6,26 +6,49 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace darkroom::test {
 namespace {
 
-// A 2x2 square facing +z at z = -5, as an OBJ file, and a scene file with two
-// cameras on the z axis looking at it.
+// The square's two triangles as a binary STL: 80-byte header, count, then
+// per triangle a normal, three vertices and a 16-bit attribute.
+std::string quadStl() {
+    std::string s(80, ' ');
+    auto put = [&](auto v) { s.append(reinterpret_cast<const char*>(&v), sizeof v); };  // little-endian hosts
+    put(std::uint32_t(2));
+    const float triangles[2][9] = {{-1, -1, -5, 1, -1, -5, 1, 1, -5}, {-1, -1, -5, 1, 1, -5, -1, 1, -5}};
+    for (const auto& t : triangles) {
+        for (float n : {0.f, 0.f, 1.f}) put(n);
+        for (int k = 0; k < 9; ++k) put(t[k]);
+        put(std::uint16_t(0));
+    }
+    return s;
+}
+
+// A 2x2 square facing +z at z = -5, as an OBJ, an OFF and a binary STL file,
+// and a scene file (drawing `mesh`, one of them) with two cameras on the z
+// axis looking at it.
 struct SceneFiles {
     TempDir dir;
     std::string scene = dir.file("scene.yaml");
-    SceneFiles(double fov = 40.0) {
+    std::string mesh;
+    SceneFiles(double fov = 40.0, std::string meshFile = "quad.obj") : mesh(std::move(meshFile)) {
         writeText(dir.file("quad.obj"), "v -1 -1 -5\nv 1 -1 -5\nv 1 1 -5\nv -1 1 -5\nf 1 2 3\nf 1 3 4\n");
+        writeText(dir.file("quad.off"), "OFF\n4 2 0\n-1 -1 -5\n1 -1 -5\n1 1 -5\n-1 1 -5\n3 0 1 2\n3 0 2 3\n");
+        writeText(dir.file("quad.stl"), quadStl());
         writeScene(fov);
     }
     void writeScene(double fov) {
         writeText(scene, "version: 1\n"
                          "objects:\n"
-                         "  - file: quad.obj\n"
+                         "  - file: " + mesh + "\n"
                          "cameras:\n"
                          "  projection: perspective\n"
                          "  fov: " + std::to_string(fov) + "\n"
@@ -68,6 +91,28 @@ TEST(Capture, RendersTheChosenCameraOfASceneFile) {
     auto second = run(*f, {{"scene", {Value(files.scene)}}, {"camera", {Value(1)}}});
     EXPECT_NEAR(centre(second, "Z"), 7.0f, 1e-5f);
     EXPECT_EQ(second->metadata().camera->position, (Vec3{0, 0, 2}));
+}
+
+// OFF and STL files in a scene file: the same square, so the same pixels as the OBJ's.
+TEST(Capture, RendersOffAndStlMeshesLikeTheirObj) {
+    SceneFiles objFiles;
+    auto f = makeCapture();
+    const auto obj = run(*f, {{"scene", {Value(objFiles.scene)}}});
+    const std::size_t pixels = std::size_t(obj->width()) * std::size_t(obj->height());
+    for (const char* mesh : {"quad.off", "quad.stl"}) {
+        SceneFiles files(40.0, mesh);
+        auto g = makeCapture();
+        const auto b = run(*g, {{"scene", {Value(files.scene)}}});
+        EXPECT_NEAR(centre(b, "Z"), 5.0f, 1e-5f) << mesh;
+        EXPECT_NEAR(centre(b, "N.z"), 1.0f, 1e-6f) << mesh;
+        for (const char* channel : {"Z", "N.x", "N.y", "N.z"}) {
+            const std::vector<float> got(b->requireFloat(channel), b->requireFloat(channel) + pixels);
+            const std::vector<float> want(obj->requireFloat(channel), obj->requireFloat(channel) + pixels);
+            EXPECT_TRUE(std::equal(got.begin(), got.end(), want.begin(), [](float x, float y) {
+                return x == y || (std::isnan(x) && std::isnan(y));
+            })) << mesh << " " << channel;
+        }
+    }
 }
 
 TEST(Capture, OverridesResolutionAndChannels) {

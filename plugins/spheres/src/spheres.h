@@ -16,7 +16,7 @@ private:
                    "they are composited with)"};
     PathIn points_{"points", "",
                    "The point list: a CSV with columns x, y, z and optionally radius and fields, or the vertices of "
-                   "a .ply/.vtk/.vtp/.vtu/.obj file. {column} placeholders are filled from `row`, e.g. "
+                   "a .ply/.obj/.off/.stl/.vtk/.vtp/.vtu file. {column} placeholders are filled from `row`, e.g. "
                    "{FILE_maxima} for the list a capture stored beside each entry"};
     RowIn row_{"row", "The Cinema row for placeholders in `points` (connect CinemaReader's row)"};
     FloatIn radius_{"radius", 0.02, 0.0, 1e9, "Radius in world units for points the file gives none"};

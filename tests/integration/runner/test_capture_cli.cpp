@@ -68,6 +68,35 @@ TEST(CaptureCli, BunnyCaptureIsDescribedByInfo) {
     EXPECT_NE(info.out.find("perspective"), std::string::npos) << info.out;
 }
 
+// A scene drawing an STL (ASCII) and an OFF file, captured end to end: a
+// tetrahedron in each format, side by side.
+TEST(CaptureCli, StlAndOffScenesCapture) {
+    test::TempDir dir;
+    const char* corners[4] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1"};
+    const char* shifted[4] = {"2 0 0", "3 0 0", "2 1 0", "2 0 1"};  // the OFF's, beside the STL's
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    std::string stl = "solid tetra\n", off = "OFF\n4 4 6\n";
+    for (const char* c : shifted) off += std::string(c) + "\n";
+    for (const auto& f : faces) {
+        stl += "facet normal 0 0 0\nouter loop\n";
+        for (int v : f) stl += std::string("vertex ") + corners[v] + "\n";
+        stl += "endloop\nendfacet\n";
+        off += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+    }
+    test::writeText(dir.file("tetra.stl"), stl + "endsolid tetra\n");
+    test::writeText(dir.file("tetra.off"), off);
+    test::writeText(dir.file("s.yaml"), "objects:\n  - file: tetra.stl\n  - file: tetra.off\n    name: other\n"
+                                        "cameras:\n  resolution: [32, 24]\n  grid: {phi: 2, theta: 1}\n"
+                                        "channels:\n  normals: true\n  objectId: true\n");
+    const auto cap = runDarkroom({"capture", dir.file("s.yaml"), "--output", dir.file("db.cdb")});
+    ASSERT_EQ(cap.exitCode, 0) << cap.err;
+    const auto info = runDarkroom({"info", dir.file("db.cdb")});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_NE(info.out.find("2 rows"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("32 x 24"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("N.x"), std::string::npos) << info.out;
+}
+
 TEST(CaptureCli, RefusesToOverwriteWithoutAFlag) {
     test::TempDir dir;
     test::writeText(dir.file("s.yaml"), kScene);

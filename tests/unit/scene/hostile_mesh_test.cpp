@@ -14,23 +14,12 @@
 
 using namespace darkroom;
 using darkroom::test::expectError;
+using darkroom::test::expectInputError;
 using darkroom::test::put;
 
 namespace {
 
 const char* kXyz = "property float x\nproperty float y\nproperty float z\n";
-
-// Asserts that fn throws InputError (not only Error) with every part, on one line.
-void expectInputError(const std::function<void()>& fn, const std::vector<std::string>& parts) {
-    try {
-        fn();
-        ADD_FAILURE() << "expected darkroom::InputError containing '" << parts.front() << "'";
-    } catch (const InputError& e) {
-        const std::string msg = e.what();
-        for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
-        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
-    }
-}
 
 // Three vertices, then two 'element face' blocks that both carry a cell
 // property: the second block's count sized the cell arrays, the first wrote

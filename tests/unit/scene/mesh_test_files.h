@@ -87,4 +87,16 @@ inline void expectError(const std::function<void()>& fn, const std::vector<std::
     }
 }
 
+// Asserts that fn throws InputError (not only Error) with every part, on one line.
+inline void expectInputError(const std::function<void()>& fn, const std::vector<std::string>& parts) {
+    try {
+        fn();
+        ADD_FAILURE() << "expected darkroom::InputError containing '" << parts.front() << "'";
+    } catch (const darkroom::InputError& e) {
+        const std::string msg = e.what();
+        for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
+    }
+}
+
 }  // namespace darkroom::test

@@ -1,7 +1,7 @@
 // Corrupted and truncated copies of valid files: every reader must either
 // succeed or throw darkroom::Error naming the file, never crash or throw
 // anything else. A small deterministic fuzz (fixed seeds) run on every build.
-#include "mesh_test_files.h"
+#include "off_stl_test_files.h"
 #include "test_support.h"
 
 #include <darkroom/scene/mesh_readers.h>
@@ -72,6 +72,19 @@ std::string appendedVtp(bool zlib) {
 
 std::string asciiObj() { return "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nf 1 2 3\nf -1 -2 -3 1\nl 1 2 4\n"; }
 
+std::string asciiOff() {
+    return "CNOFF # a comment\n4 2 0\n0 0 0 0 0 1 1 0 0 1\n1 0 0 0 0 1 0 1 0 1\n0 1 0 0 0 1 0 0 1 1\n"
+           "1 1 1 0 0 1 1 1 1 1\n3 0 1 2\n4 3 2 1 0 0.5 0.5 0.5\n";
+}
+
+// Two triangles: the binary form's floats hold NULs, so no flip makes it ASCII by accident.
+SceneObject twoTriangles() {
+    SceneObject o;
+    o.vertices = {0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 1, 0};
+    o.indices = {0, 1, 2, 2, 1, 3};
+    return o;
+}
+
 void fuzz(const std::string& name, const std::string& valid) {
     test::TempDir dir;
     const std::string path = dir.file(name);
@@ -111,3 +124,6 @@ TEST(ReaderRobustness, BinaryLegacyVtk) { fuzz("m.vtk", binaryVtk()); }
 TEST(ReaderRobustness, AppendedVtp) { fuzz("m.vtp", appendedVtp(false)); }
 TEST(ReaderRobustness, AppendedZlibVtp) { fuzz("z.vtp", appendedVtp(true)); }
 TEST(ReaderRobustness, Obj) { fuzz("m.obj", asciiObj()); }
+TEST(ReaderRobustness, Off) { fuzz("m.off", asciiOff()); }
+TEST(ReaderRobustness, AsciiStl) { fuzz("a.stl", test::asciiStl(twoTriangles())); }
+TEST(ReaderRobustness, BinaryStl) { fuzz("b.stl", test::binaryStl(twoTriangles(), "solid header")); }

@@ -19,13 +19,18 @@
 
 namespace darkroom {
 
-// Dispatches on the extension: .ply, .obj, .vtk, .vtp, .vtu, .pvtp, .pvtu (case-insensitive).
+// Dispatches on the extension: .ply, .obj, .off, .stl, .vtk, .vtp, .vtu, .pvtp, .pvtu (case-insensitive).
 // `warnings`, when given, receives notes about skipped content (e.g. 3D cells).
 DARKROOM_API std::vector<SceneObject> readMesh(const std::string& path,
                                                std::vector<std::string>* warnings = nullptr);
 
 DARKROOM_API std::vector<SceneObject> readPly(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readObj(const std::string& path);
+// ASCII OFF and its COFF, NOFF, CNOFF, STOFF variants (binary OFF is refused).
+DARKROOM_API std::vector<SceneObject> readOff(const std::string& path);
+// ASCII and binary STL, told apart by the file's size; identical positions
+// become one vertex (numbered in first use).
+DARKROOM_API std::vector<SceneObject> readStl(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readVtkLegacy(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readVtkXml(const std::string& path,
                                                  std::vector<std::string>* warnings = nullptr);

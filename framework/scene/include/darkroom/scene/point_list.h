@@ -9,7 +9,7 @@
 namespace darkroom {
 
 // Reads a .csv as readPointListCsv does, or the vertices of every part of any
-// file readMesh reads (.ply, .vtk, .vtp, .vtu, .obj) with their point fields
+// file readMesh reads (.ply, .obj, .off, .stl, .vtk, .vtp, .vtu) with their point fields
 // (radius NaN). Throws darkroom::Error naming file:line and what was expected.
 DARKROOM_API PointList readPointList(const std::string& path);
 
