@@ -73,7 +73,7 @@ class Scene:
         self._add("points", name, v, len(v), point_fields, None, radii=r, radius=float(radius))
 
     def add_file(self, path, name=None, radius=0.01):
-        """The geometry of a mesh file Darkroom reads (.ply .obj .vtk .vtp
+        """The geometry of a mesh file Darkroom reads (.ply .obj .off .stl .vtk .vtp
         .vtu .pvtp .pvtu), with its point and cell fields: one object per
         part ("name/surface", "name/lines", "name/points" when there are
         several); lines and points get `radius`. Returns the reader's warnings."""
