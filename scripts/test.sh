@@ -25,6 +25,13 @@ if [ "${mpi_tests:-0}" -eq 0 ]; then
   echo "test.sh: no MPI tests are registered (ctest -L mpi lists none; see the CMake output about MPI)" >&2
   exit 1
 fi
+# And the Python module's tests (pytest, and the package as installed).
+python_tests=$(ctest -N -L python | sed -n 's/^Total Tests: //p')
+if [ "${python_tests:-0}" -eq 0 ]; then
+  echo "test.sh: no Python tests are registered (ctest -L python lists none; see the CMake output about Python)" >&2
+  exit 1
+fi
 ctest --output-on-failure -j "$(nproc)" --timeout 900
 echo "test.sh: the editor was built and its ${gui_tests} GUI tests (ctest -L gui) were part of this run"
 echo "test.sh: ${mpi_tests} MPI tests (ctest -L mpi) were part of this run"
+echo "test.sh: ${python_tests} Python tests (ctest -L python) were part of this run"

@@ -1,5 +1,6 @@
 #include "color_mapping.h"
 
+#include "database_range.h"
 #include "map_kernel.h"
 #include "scalar_range.h"
 
@@ -7,6 +8,8 @@
 #include <darkroom/error.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -115,6 +118,81 @@ Color mapValue(const MapJob& job, std::size_t i, double v) {
 
 }  // namespace colormapping
 
+namespace {
+
+// The clip-th and (100 - clip)-th percentiles of the finite values over
+// non-background pixels (positive ones on a log scale).
+ScalarRange percentileRange(const ScalarChannel& s, const float* depth, std::size_t n, double clip, bool positiveOnly) {
+    std::vector<double> v;
+    v.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (depth && std::isinf(depth[i]) && depth[i] > 0) continue;
+        const double x = s[i];
+        if (std::isfinite(x) && (!positiveOnly || x > 0)) v.push_back(x);
+    }
+    ScalarRange r;
+    if (v.empty()) return r;
+    const auto at = [&v](double q) {
+        const auto k = std::size_t(std::llround(q * double(v.size() - 1)));
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+        return v[k];
+    };
+    r.low = at(clip / 100.0);
+    r.high = at(1.0 - clip / 100.0);
+    r.found = true;
+    return r;
+}
+
+// A range narrower than the float resolution of its values is rounding, not
+// data (a near-constant field would spread its last bits over the whole map):
+// it becomes one value, mapped to the middle of the map.
+bool collapseRounding(double& low, double& high) {
+    const double scale = std::max(std::fabs(low), std::fabs(high));
+    if (high - low > 4.0 * double(std::numeric_limits<float>::epsilon()) * scale || high == low) return false;
+    low = high = (low + high) / 2;
+    return true;
+}
+
+}  // namespace
+
+ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& in, const std::string& channel) const {
+    const bool logScale = ctx.get(scale_) == Scale::Log;
+    const Range mode = ctx.get(range_);
+    if (mode == Range::Manual) {
+        const double low = ctx.get(minimum_), high = ctx.get(maximum_);
+        if (!std::isfinite(low) || !std::isfinite(high)) throw Error("a manual range needs finite minimum and maximum");
+        if (logScale && !(low > 0 && high > 0))
+            throw Error("a log scale needs a positive manual range; got minimum " + std::to_string(low) +
+                        " and maximum " + std::to_string(high));
+        return {low, high, false};
+    }
+    const double clip = ctx.get(clip_);
+    const bool symmetric = ctx.get(symmetric_);
+    if (symmetric && logScale) throw Error("a log scale cannot be symmetric about zero; turn off 'symmetric'");
+    ScalarRange r;
+    if (mode == Range::Database) {
+        if (clip > 0)
+            throw Error("'clip' applies to the automatic range (per image); the database range is every entry's "
+                        "minimum and maximum");
+        const auto source = in.metadata().attributes.find("source");
+        const DatabaseRange d = databaseRange(source == in.metadata().attributes.end() ? "" : source->second, channel,
+                                              logScale, [&ctx](double f) { ctx.progress(0.5 * f); });
+        r.found = d.found, r.low = d.low, r.high = d.high;
+    } else {
+        const ScalarChannel scalar{in.hostFloat(channel), in.hostUInt(channel)};
+        r = clip > 0 ? percentileRange(scalar, in.hostFloat("Z"), in.pixelCount(), clip, logScale)
+                     : finiteRange(ctx, scalar, in.hostFloat("Z"), in.width(), in.height(), logScale);
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!r.found) return {nan, nan, false};
+    if (symmetric) {
+        const double m = std::max(std::fabs(r.low), std::fabs(r.high));
+        r.low = -m, r.high = m;
+    }
+    const bool constant = collapseRounding(r.low, r.high);
+    return {r.low, r.high, constant};
+}
+
 void ColorMapping::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const std::string channel = chooseChannel(*in, ctx.get(channel_));
@@ -129,22 +207,13 @@ void ColorMapping::execute(Context& ctx) {
     const float alpha = float(ctx.get(opacity_));
 
     const bool logScale = ctx.get(scale_) == Scale::Log;
-    double low = std::numeric_limits<double>::quiet_NaN(), high = low;
-    if (ctx.get(range_) == Range::Manual) {
-        low = ctx.get(minimum_);
-        high = ctx.get(maximum_);
-        if (!std::isfinite(low) || !std::isfinite(high))
-            throw Error("a manual range needs finite minimum and maximum");
-        if (logScale && !(low > 0 && high > 0))
-            throw Error("a log scale needs a positive manual range; got minimum " + std::to_string(low) +
-                        " and maximum " + std::to_string(high));
-    } else {
-        const ScalarRange r = finiteRange(ctx, scalar, depth, w, h, logScale);
-        if (r.found) {
-            low = r.low;
-            high = r.high;
-        }
-    }
+    const ChosenRange range = chooseRange(ctx, *in, channel);
+    const double low = range.low, high = range.high;
+    // A constant field maps to the middle of the map: mapped over a range
+    // wide beside its last bits, every value lands there.
+    const double spread = range.constant ? std::max(1.0, std::fabs(low)) : 0.0;
+    const double mapLow = logScale ? low / (1 + spread) : low - spread;
+    const double mapHigh = logScale ? high * (1 + spread) : high + spread;
 
     // Colour is written for every pixel; depth is the input's plane, shared.
     auto out = ctx.allocate(w, h, {"R", "G", "B", "A"}, Fill::None);
@@ -157,8 +226,8 @@ void ColorMapping::execute(Context& ctx) {
     job.nan = nan;
     job.alpha = alpha;
     job.haveRange = !std::isnan(low);
-    job.low = low;
-    job.high = high;
+    job.low = mapLow;
+    job.high = mapHigh;
     job.out[0] = out->writeFloat("R");
     job.out[1] = out->writeFloat("G");
     job.out[2] = out->writeFloat("B");
@@ -178,7 +247,7 @@ void ColorMapping::execute(Context& ctx) {
                     } else if (std::isnan(v) || !job.haveRange) {
                         c = nan;
                     } else {
-                        const double f = colormapping::logPosition(v, low, high) * (kTableSize - 1);
+                        const double f = colormapping::logPosition(v, mapLow, mapHigh) * (kTableSize - 1);
                         const int k = std::min(int(f), kTableSize - 2);
                         const float t = float(f - k), s = 1.0f - t;
                         // This form returns either entry exactly at t = 0 and t = 1.

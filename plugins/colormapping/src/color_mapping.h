@@ -8,17 +8,26 @@ namespace darkroom {
 // transparent.
 class ColorMapping final : public Filter {
 public:
-    enum class Range { Automatic, Manual };
+    enum class Range { Automatic, Manual, Database };
     enum class Scale { Linear, Log };
 
     PortList ports() const override {
-        return {image_,   channel_, colormap_,    range_,       minimum_,      maximum_,   scale_,
-                nanColor_, useMapNanColor_, opacity_, result_, usedMinimum_, usedMaximum_, usedScale_,
+        return {image_,    channel_,        colormap_, range_,  minimum_,     maximum_,     symmetric_, clip_, scale_,
+                nanColor_, useMapNanColor_, opacity_,  result_, usedMinimum_, usedMaximum_, usedScale_,
                 usedColormap_};
     }
     void execute(Context& ctx) override;
 
 private:
+    // The range mapped, [low, high] (NaN when there is none), from the
+    // settings and the data; `constant` when it was narrower than the float
+    // resolution of its values and became one value.
+    struct ChosenRange {
+        double low, high;
+        bool constant = false;
+    };
+    ChosenRange chooseRange(Context& ctx, const Buffer& in, const std::string& channel) const;
+
     static constexpr double kBig = 1e30;  // no practical limit on data values
 
     ImageIn image_{"image", "Image holding the scalar channel (and optionally depth Z)"};
@@ -28,13 +37,21 @@ private:
     ColorMapIn colormap_{"colormap", "viridis",
                          "Preset name or a ParaView colour-map JSON file (relative to the pipeline file)"};
     EnumIn<Range> range_{"range",
-                         {{Range::Automatic, "automatic"}, {Range::Manual, "manual"}},
+                         {{Range::Automatic, "automatic"}, {Range::Manual, "manual"}, {Range::Database, "database"}},
                          Range::Automatic,
                          "automatic: the finite minimum and maximum of the channel over non-background pixels; "
-                         "manual: minimum and maximum below"};
+                         "manual: minimum and maximum below; database: over every entry of the Cinema database "
+                         "the image was read from (its CISChannelVarMin/Max, else one scan, cached), so that "
+                         "all its entries share one scale"};
     FloatIn minimum_{"minimum", 0.0, -kBig, kBig, "Value mapped to the start of the map (manual range)"};
     FloatIn maximum_{"maximum", 1.0, -kBig, kBig,
                      "Value mapped to the end of the map (manual range); below minimum flips the map"};
+    BoolIn symmetric_{"symmetric", false,
+                      "Widen the automatic or database range to be symmetric about zero, [-m, m] with m the "
+                      "larger magnitude (a diverging map's centre at 0)"};
+    FloatIn clip_{"clip", 0.0, 0.0, 49.0,
+                  "Percent of values left out at each end of the automatic range (1: the 1st to 99th percentile), "
+                  "so that a few outliers do not take the whole map"};
     EnumIn<Scale> scale_{"scale",
                          {{Scale::Linear, "linear"}, {Scale::Log, "log"}},
                          Scale::Linear,

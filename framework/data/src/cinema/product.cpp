@@ -68,7 +68,11 @@ std::shared_ptr<WritableBuffer> readCinemaProduct(const std::string& path, Diagn
             for (auto& w : image.warnings) warnings->push_back(std::move(w));
         return std::move(image.buffer);
     }
-    return readImage(path);
+    // Which product it is, whatever an earlier pipeline left in the file's
+    // header: ColorMapping's database range finds the database from it.
+    auto image = readImage(path);
+    image->metadata().attributes["source"] = path;
+    return image;
 }
 
 }  // namespace darkroom
