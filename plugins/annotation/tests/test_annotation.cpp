@@ -163,15 +163,17 @@ TEST(Annotation, RowComesFromACinemaReaderInAGraph) {
     g.connect({"read", "image"}, {"label", "image"});
     g.connect({"read", "row"}, {"label", "row"});
     Evaluator ev;
-    const auto typed = [&](const std::string& text) {
+    // The same picture typed by hand; the reader's image also names its product.
+    const auto typed = [&](const std::string& text, const std::string& product) {
         auto img = test::makeImage(200, 100, {"R", "G", "B"}, [](int, int, int) { return 0.1f; });
+        img->metadata().attributes["source"] = dir.file("t.cdb/" + product);
         return annotate(img, {{"text", {Value(text)}}, {"color", {Value(Color{1, 1, 1, 1})}}});
     };
     g.setParameter("read", "parameters", Value("time=1.5"));
     const BufferPtr first = ev.evaluateImage(g, "label", "image");
-    EXPECT_TRUE(identical(*first, *typed("time 1.5")));
+    EXPECT_TRUE(identical(*first, *typed("time 1.5", "time=1.5.exr")));
     g.setParameter("read", "parameters", Value("time=2.5"));
-    EXPECT_TRUE(identical(*ev.evaluateImage(g, "label", "image"), *typed("time 2.5")));
+    EXPECT_TRUE(identical(*ev.evaluateImage(g, "label", "image"), *typed("time 2.5", "time=2.5.exr")));
 }
 
 TEST(Annotation, ErrorsNameWhatIsMissing) {
