@@ -27,8 +27,6 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-const Representation kOrder[] = {Representation::Surface, Representation::Lines, Representation::Points};
-
 std::string fieldList(const SceneObject& o) {
     std::string s;
     for (const auto& f : o.fields)

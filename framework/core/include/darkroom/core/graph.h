@@ -148,7 +148,6 @@ private:
     std::unordered_map<std::string, std::size_t> nodeIndex_;
     std::unordered_map<std::string, std::vector<std::size_t>> edgesFrom_, edgesTo_;
     std::uint64_t revision_ = 0;
-    std::uint64_t counter_ = 0;
 };
 
 // Whether an output of type `from` may feed an input of type `to`.
