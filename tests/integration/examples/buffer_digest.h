@@ -2,7 +2,8 @@
 // A 64-bit digest of everything a buffer holds: size, every channel (name,
 // type and the bits of every pixel, channels taken in name order so that a
 // pass may append or replace a channel in another position), and metadata
-// (camera fields in hexadecimal floating point, attributes). Two buffers with
+// (camera fields in hexadecimal floating point, attributes but `source`, the
+// path it was read from). Two buffers with
 // the same digest are, for a test, bit for bit the same picture.
 #include <darkroom/buffer.h>
 
