@@ -12,6 +12,7 @@
 #include <vector>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
@@ -173,11 +174,13 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
     if (mode == Range::Database) {
         if (clip > 0)
             throw Error("'clip' applies to the automatic range (per image); the database range is every entry's "
-                        "minimum and maximum");
+                        "minimum and maximum: set clip to 0, or range to automatic");
         const auto source = in.metadata().attributes.find("source");
         const DatabaseRange d = databaseRange(source == in.metadata().attributes.end() ? "" : source->second, channel,
                                               logScale, [&ctx](double f) { ctx.progress(0.5 * f); });
         r.found = d.found, r.low = d.low, r.high = d.high;
+        // A database written again (a new capture) changes the range.
+        ctx.readsFile((std::filesystem::path(d.database) / "data.csv").string());
     } else {
         const ScalarChannel scalar{in.hostFloat(channel), in.hostUInt(channel)};
         r = clip > 0 ? percentileRange(scalar, in.hostFloat("Z"), in.pixelCount(), clip, logScale)

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -39,13 +41,21 @@ std::string findDatabase(const std::string& source) {
                 "Cinema database");
 }
 
+constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
+
+// FNV-1a over bytes: stamps and cache file names, not security.
+std::uint64_t fnv(std::uint64_t h, const void* bytes, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<const std::uint8_t*>(bytes)[i]) * 0x100000001b3ULL;
+    return h;
+}
+
+// A file's path, size and modification time, folded into `h`.
 std::uint64_t mixStamp(std::uint64_t h, const std::string& path) {
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
     const auto time = ec ? 0 : fs::last_write_time(path, ec).time_since_epoch().count();
-    for (const std::uint64_t v : {std::uint64_t(ec ? 0 : size), std::uint64_t(time)}) h = (h ^ v) * 0x100000001b3ULL;
-    for (const char c : path) h = (h ^ std::uint8_t(c)) * 0x100000001b3ULL;
-    return h;
+    const std::uint64_t values[2] = {std::uint64_t(ec ? 0 : size), std::uint64_t(time)};
+    return fnv(fnv(h, values, sizeof values), path.data(), path.size());
 }
 
 // The rows whose products hold `channel`: one per entry (a composable image
@@ -63,7 +73,7 @@ std::vector<std::size_t> entryRows(const CinemaDatabase& db) {
 }
 
 std::uint64_t stampOf(const CinemaDatabase& db, const std::vector<std::size_t>& rows) {
-    std::uint64_t h = mixStamp(0xcbf29ce484222325ULL, db.csvPath());
+    std::uint64_t h = mixStamp(kFnvBasis, db.csvPath());
     std::set<std::string> seen;
     for (std::size_t r = 0; r < db.rowCount(); ++r) {
         std::string p;
@@ -82,10 +92,9 @@ fs::path cacheFile(const CinemaDatabase& db) {
     const char* home = std::getenv("HOME");
     const fs::path base = xdg && *xdg ? fs::path(xdg) : home && *home ? fs::path(home) / ".cache" : fs::path();
     if (base.empty()) return {};
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    for (const char c : fs::absolute(db.csvPath()).lexically_normal().string()) h = (h ^ std::uint8_t(c)) * 0x100000001b3ULL;
+    const std::string csv = fs::absolute(db.csvPath()).lexically_normal().string();
     std::ostringstream name;
-    name << std::hex << h << ".txt";
+    name << std::hex << fnv(kFnvBasis, csv.data(), csv.size()) << ".txt";
     return base / "darkroom" / "ranges" / name.str();
 }
 
@@ -162,22 +171,53 @@ bool fromComposableColumns(const CinemaDatabase& db, const std::string& channel,
     return r.found;
 }
 
+// Ranges found in this process, by database, channel and scale, with the
+// stamp of the data.csv they were found for: a --foreach run asks once per
+// entry, and each ask would otherwise parse data.csv and stat every product
+// again (quadratic in the entries).
+struct Remembered {
+    std::uint64_t csvStamp = 0;
+    DatabaseRange range;
+};
+std::mutex g_mutex;
+std::map<std::string, Remembered> g_remembered;
+
+// The range from the CIS columns, the cache file, or a scan (then cached).
+DatabaseRange scanOrLookUp(const std::string& folder, const std::string& channel, bool positiveOnly,
+                           const std::function<void(double)>& progress);
+
 }  // namespace
 
 DatabaseRange databaseRange(const std::string& source, const std::string& channel, bool positiveOnly,
                             const std::function<void(double)>& progress) {
+    const std::string folder = findDatabase(source);
+    const std::string key = folder + '\n' + channel + (positiveOnly ? "\nlog" : "\nlinear");
+    const std::uint64_t csvStamp = mixStamp(kFnvBasis, (fs::path(folder) / "data.csv").string());
+    {
+        std::lock_guard<std::mutex> lock(g_mutex);
+        const auto it = g_remembered.find(key);
+        if (it != g_remembered.end() && it->second.csvStamp == csvStamp) return it->second.range;
+    }
+    DatabaseRange r = scanOrLookUp(folder, channel, positiveOnly, progress);
+    std::lock_guard<std::mutex> lock(g_mutex);
+    g_remembered[key] = {csvStamp, r};
+    return r;
+}
+
+namespace {
+
+DatabaseRange scanOrLookUp(const std::string& folder, const std::string& channel, bool positiveOnly,
+                           const std::function<void(double)>& progress) {
     DatabaseRange r;
-    r.database = findDatabase(source);
+    r.database = folder;
     const CinemaDatabase db = CinemaDatabase::open(r.database);
     if (!positiveOnly && fromComposableColumns(db, channel, r)) {
-        r.how = "CISChannelVarMin/Max";
         return r;
     }
     const std::vector<std::size_t> rows = entryRows(db);
     const std::uint64_t stamp = stampOf(db, rows);
     const fs::path cache = cacheFile(db);
     if (!cache.empty() && cached(cache, stamp, channel, positiveOnly, r)) {
-        r.how = "cached scan of " + std::to_string(rows.size()) + " entries";
         return r;
     }
     const bool composable = isComposableImageSet(db);
@@ -187,8 +227,9 @@ DatabaseRange databaseRange(const std::string& source, const std::string& channe
         if (progress) progress(double(k + 1) / double(rows.size()));
     }
     remember(cache, stamp, channel, positiveOnly, r);
-    r.how = "scan of " + std::to_string(rows.size()) + " entries";
     return r;
 }
+
+}  // namespace
 
 }  // namespace darkroom

@@ -7,7 +7,8 @@
 //  - a cache file of an earlier scan, valid while data.csv and every
 //    product keep their modification times and sizes;
 //  - a scan of every entry (read as CinemaReader reads it), then cached.
-// The cache lives in the user's cache folder ($XDG_CACHE_HOME/darkroom/
+// Within a process a found range is kept while data.csv is unchanged (a
+// --foreach run asks once per entry). The cache lives in the user's cache folder ($XDG_CACHE_HOME/darkroom/
 // ranges, else ~/.cache/darkroom/ranges), never in the database: a
 // database may be read-only, shared or someone else's.
 #include <functional>
@@ -19,7 +20,6 @@ struct DatabaseRange {
     double low = 0, high = 0;
     bool found = false;        // false when no entry had a finite value
     std::string database;      // the .cdb folder
-    std::string how;           // "CISChannelVarMin/Max", "cached scan of N entries", "scan of N entries"
 };
 
 // `source`: the product the image was read from (its metadata "source");
