@@ -5,7 +5,8 @@
 # tests enabled a missing piece stops configuration and names the Debian
 # package; without tests a warning says what is left out. The interpreter is
 # the one CMake finds first; point -DPython3_EXECUTABLE=... at another (a
-# pyenv or conda interpreter lacks Debian's python3-numpy).
+# pyenv or conda interpreter lacks Debian's python3-numpy). scripts/build.sh
+# passes Debian's /usr/bin/python3, for which install-deps.sh installs.
 option(DARKROOM_WITH_PYTHON "Build the Python module (pybind11, NumPy)" ON)
 
 function(_darkroom_python_missing)
