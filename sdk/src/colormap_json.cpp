@@ -4,6 +4,7 @@
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
 #include <darkroom/srgb.h>
+#include <darkroom/strings.h>
 
 #include <nlohmann/json.hpp>
 
@@ -93,9 +94,14 @@ ColorMapData parseEntry(const std::string& path, const Json& e) {
 ColorMapData loadParaViewColorMap(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) {
-        std::string names;
-        for (const auto& n : colorMapPresets()) names += (names.empty() ? "" : ", ") + n;
-        fail(path, "no such file, and not a preset name (" + names + ")");
+        // The spec arrives resolved against the pipeline's folder: its last
+        // part is what was typed when it was meant as a preset.
+        // (Split by hand: path::filename() would be one more symbol the SDK exports.)
+        std::string typed = path.substr(path.find_last_of('/') + 1);
+        for (char& c : typed) c = char(std::tolower(static_cast<unsigned char>(c)));
+        // A missing input file is bad input (exit 2, docs/cli.md), as every reader's.
+        throw InputError("colour map '" + path + "': no such file, and not a preset name" +
+                         didYouMean(typed, colorMapPresets()) + " (" + join(colorMapPresets(), ", ") + ")");
     }
     // A FIFO, a device or a directory is refused (InputError), not read without end.
     const std::string text = readInputFile(path, "colour map");

@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include <darkroom/error.h>
+#include <darkroom/strings.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -52,7 +53,8 @@ void addDescribeCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
             }
             const RegisteredFilter* f = r.filter(*type);
             if (!f) {
-                reportError("unknown node type '" + *type + "'; `darkroom plugins` lists the available types");
+                reportError("unknown node type '" + *type + "'" + didYouMean(*type, r.typeNames(true)) +
+                            "; `darkroom plugins` lists the available types");
                 return int(kBadInput);
             }
             const PortList& ports = r.ports(*type);

@@ -2,6 +2,7 @@
 #include "processes.h"
 #include "profile_report.h"
 #include "progress_bar.h"
+#include "warning_log.h"
 
 #include <darkroom/error.h>
 #include <darkroom/core/assignment.h>
@@ -68,7 +69,9 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
     // Under mpirun, rank 0 alone draws the bar.
     ProgressBar bar("run", showProgress(global));
     o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
-    o.onWarning = [&bar](const Diagnostic& w) {
+    WarningLog warnings;
+    o.onWarning = [&bar, &warnings](const Diagnostic& w) {
+        if (!warnings.firstTime(w)) return;
         bar.finish();
         report({w});
     };
@@ -92,6 +95,7 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
         }
         evaluate(a.path);
         bar.finish();
+        warnings.reportRepeats();
         return kOk;
     }
     workflows::BatchCallbacks cb;
@@ -102,11 +106,13 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
         summary = workflows::shadeEntries(g, ev, o, {a.foreach, a.where, a.index, a.resume}, group, cb);
     } catch (const InputError& e) {
         bar.finish();
+        warnings.reportRepeats();
         // The same on every process: one says so.
         if (group.lead()) reportError(e.what());
         return kBadInput;
     }
     bar.finish();
+    warnings.reportRepeats();
     return reportBatch(summary, global.quiet);
 }
 

@@ -1,5 +1,6 @@
 #include <darkroom/error.h>
 #include <darkroom/core/graph.h>
+#include <darkroom/strings.h>
 
 #include <algorithm>
 #include <cctype>
@@ -314,8 +315,8 @@ Diagnostics Graph::validate() const {
     Diagnostics out;
     for (const auto& n : nodes_) {
         if (n.placeholder) {
-            out.push_back(nodeError(n.name, "unknown type '" + n.type +
-                                                "' (kept as a placeholder); no loaded plugin provides it"));
+            out.push_back(nodeError(n.name, "unknown type '" + n.type + "'" + didYouMean(n.type, registry_->typeNames()) +
+                                                ", kept as a placeholder; no loaded plugin provides it"));
             continue;
         }
         const PortList& ports = this->ports(n);

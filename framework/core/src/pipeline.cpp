@@ -42,12 +42,6 @@ bool needsQuotes(const std::string& s);
 std::string quoted(const std::string& s);
 std::string doubleQuoted(const std::string& s);
 
-// "; did you mean 'parameters'?" when `key` looks like a misspelling of a valid key.
-std::string suggestion(const std::string& key, const std::vector<std::string>& valid) {
-    const std::string near = yamlguard::nearestKey(key, valid);
-    return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
-}
-
 // One-line YAML text for a value the host does not interpret (placeholder
 // parameters, editor layout), so saving writes back what was read. Scalars
 // that were quoted, or that would not survive as plain text, stay quoted.
@@ -133,8 +127,9 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
                 n = &g.addNode(name, type.Scalar());
             } else {
                 n = &g.addPlaceholder(name, type.Scalar());
-                r.warning(type.Mark(), "unknown node type '" + type.Scalar() + "' for node '" + name +
-                                           "'; kept as a placeholder (is its plugin loaded?)", name);
+                r.warning(type.Mark(), "unknown node type '" + type.Scalar() + "' for node '" + name + "'" +
+                                           didYouMean(type.Scalar(), registry.typeNames()) +
+                                           "; kept as a placeholder (is its plugin loaded?)", name);
             }
         } catch (const Error& e) {
             r.error(it->first.Mark(), e.what(), name);
@@ -146,9 +141,9 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
             if (key == "type") continue;
             // Other keys are kept for the editor (ui:), but one that is a
             // misspelling of the host's own would silently lose its content.
-            if (key != "parameters" && !yamlguard::nearestKey(key, {"type", "parameters"}).empty()) {
+            if (key != "parameters" && !nearestName(key, {"type", "parameters"}).empty()) {
                 r.error(kv->first.Mark(), "node '" + name + "' has an unknown key '" + key + "'" +
-                                              suggestion(key, {"type", "parameters"}), name);
+                                              didYouMean(key, {"type", "parameters"}), name);
                 continue;
             }
             if (key != "parameters") {
@@ -179,7 +174,7 @@ void readNodes(Graph& g, const YAML::Node& nodes, Reader& r) {
                             valid.push_back(in.name);
                         }
                     r.error(p->first.Mark(), "node '" + name + "' (" + cur->type + ") has no parameter '" + port +
-                                                 "'" + suggestion(port, valid) +
+                                                 "'" + didYouMean(port, valid) +
                                                  "; parameters: " + (names.empty() ? "none" : names), name);
                     continue;
                 }
@@ -318,7 +313,7 @@ Graph parsePipeline(const std::string& text, const std::string& sourceName, cons
             const std::string key = it->first.Scalar();
             if (key != "darkroom" && key != "nodes" && key != "edges")
                 r.error(it->first.Mark(), "unknown top-level key '" + key + "'" +
-                                              suggestion(key, {"darkroom", "nodes", "edges"}) +
+                                              didYouMean(key, {"darkroom", "nodes", "edges"}) +
                                               " (expected darkroom, nodes and edges)");
         }
         if (const YAML::Node nodes = root["nodes"]) readNodes(g, nodes, r);

@@ -288,6 +288,16 @@ std::vector<const RegisteredFilter*> Registry::filters() const {
     return out;
 }
 
+std::vector<std::string> Registry::typeNames(bool withBackends) const {
+    std::vector<std::string> out;
+    for (const auto& [k, v] : filters_) out.push_back(k);
+    if (withBackends)
+        for (const auto& [k, v] : backends_) out.push_back(k);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 std::vector<const RegisteredBackend*> Registry::backends() const {
     std::vector<const RegisteredBackend*> out;
     for (const auto& [k, v] : backends_) out.push_back(&v);

@@ -132,21 +132,6 @@ private:
 
 };
 
-// Edits (insert, delete, replace, swap two neighbours) from a to b: the
-// optimal string alignment distance, so "paramters" and "egdes" are 1 away.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i)
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    return d[a.size()][b.size()];
-}
-
 }  // namespace
 
 YAML::Node load(const std::string& text) {
@@ -158,22 +143,6 @@ YAML::Node load(const std::string& text) {
         }
     }
     return YAML::Load(text);
-}
-
-std::string nearestKey(const std::string& key, const std::vector<std::string>& valid) {
-    std::string best;
-    std::size_t bestDistance = 0;
-    // Keys are short; anything long is no misspelling of one.
-    if (key.size() > 64) return best;
-    for (const auto& v : valid) {
-        const std::size_t d = editDistance(key, v);
-        if (d * 3 > std::max(v.size(), std::size_t(3))) continue;
-        if (best.empty() || d < bestDistance) {
-            best = v;
-            bestDistance = d;
-        }
-    }
-    return best;
 }
 
 }  // namespace darkroom::yamlguard

@@ -11,6 +11,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
+#include <darkroom/strings.h>
 #include <darkroom/scene/camera_bounds.h>
 #include <darkroom/scene/generators.h>
 #include <darkroom/scene/mesh_readers.h>
@@ -85,7 +86,7 @@ private:
             if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
                 std::string list;
                 for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-                const std::string near = yamlguard::nearestKey(key, std::vector<std::string>(allowed.begin(), allowed.end()));
+                const std::string near = nearestName(key, std::vector<std::string>(allowed.begin(), allowed.end()));
                 fail(kv.first, "unknown key '" + key + "' in " + what +
                                    (near.empty() ? std::string() : "; did you mean '" + near + "'?") + " (expected " +
                                    list + ")");

@@ -72,12 +72,11 @@ void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
                          "(a row output, a path input for the database and an integer input 'entry')");
     p.source = currentValue(g, s.reader, database->name);
     if (p.source.is_relative()) p.source = fs::path(p.options.inputBase) / p.source;
+    // Named as the node names its own failures: the database is its parameter.
     try {
         p.db.emplace(CinemaDatabase::open(p.source.string()));
-    } catch (const InputError&) {
-        throw;
     } catch (const Error& e) {
-        throw InputError(e.what());
+        throw InputError("node '" + s.reader + "' (" + reader->type + "): " + e.what());
     }
     if (s.where.empty())
         for (std::size_t r = 0; r < p.db->rowCount(); ++r) p.rows.push_back(r);

@@ -32,6 +32,7 @@ CinemaWriterOptions modeOptions(const DatabaseSink& sink) {
     CinemaWriterOptions o;
     o.overwrite = sink.mode == "overwrite";
     o.resume = sink.mode == "resume";
+    adviseNodeMode(o, sink.node);
     return o;
 }
 
@@ -150,6 +151,8 @@ void merge(const DatabaseSink& sink) {
         const CinemaWriterOptions mode = modeOptions(sink);
         o.overwrite = mode.overwrite;
         o.resume = mode.resume;
+        o.overwriteAdvice = mode.overwriteAdvice;
+        o.resumeAdvice = mode.resumeAdvice;
         CinemaWriter w(sink.database, staged.columns, o);
         // As the node does alone: a resumed database keeps the entries it has.
         std::vector<CinemaStagedEntry> adopt;

@@ -30,10 +30,11 @@ struct CinemaWriterNode::Settings {
 
 namespace {
 
-CinemaWriterOptions writerOptions(const CinemaWriterNode::Settings& s, bool again) {
+CinemaWriterOptions writerOptions(const CinemaWriterNode::Settings& s, bool again, const std::string& node) {
     using Format = CinemaWriterNode::Format;
     using Mode = CinemaWriterNode::Mode;
     CinemaWriterOptions o;
+    adviseNodeMode(o, node);
     // A database this node wrote in an earlier sequence (the editor's
     // previous evaluation) is added to, whatever the mode: not refused as
     // existing, not replaced.
@@ -116,7 +117,7 @@ void CinemaWriterNode::execute(Context& ctx) {
         std::error_code ec;
         const auto parent = std::filesystem::path(path).parent_path();
         if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-        writer_ = std::make_unique<CinemaWriter>(path, columns, writerOptions(want, same && !written_.empty()));
+        writer_ = std::make_unique<CinemaWriter>(path, columns, writerOptions(want, same && !written_.empty(), ctx.nodeName()));
     }
     last_ = std::make_unique<Settings>(std::move(want));
     // A resumed database keeps the entries it has (written by an earlier,

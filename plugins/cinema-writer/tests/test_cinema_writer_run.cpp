@@ -202,3 +202,24 @@ TEST(CinemaWriterRun, AResumeAfterThePipelineChangedIsRefused) {
     EXPECT_EQ(same.exitCode, 0) << same.err;
     EXPECT_TRUE(fs::is_regular_file(db + "/time=3.exr"));
 }
+
+// Issue 29 item 7: `darkroom run` has no --overwrite; the refusal names what
+// does work, the node's mode parameter and the --set that sets it, alone
+// and with --foreach.
+TEST(CinemaWriterRun, TheRefusalAdvisesTheNodesModeNotAFlagRunLacks) {
+    Shading r;
+    ASSERT_EQ(r.shade().exitCode, 0);
+    const std::string advice = "use mode: overwrite (--set write.mode=overwrite) to replace it or mode: resume "
+                               "(--set write.mode=resume) to complete it";
+    const auto each = r.shade();
+    EXPECT_EQ(each.exitCode, 2) << each.err;
+    EXPECT_THAT(each.err, HasSubstr("node 'write' (CinemaWriter): database " + r.dir.file("out/shaded.cdb") +
+                                    " already exists and is not empty; " + advice));
+    EXPECT_THAT(each.err, ::testing::Not(HasSubstr("--overwrite")));
+    const auto once = test::runDarkroom({"-q", "run", r.dir.file("shade.yaml"), "-o", r.dir.file("out")});
+    EXPECT_NE(once.exitCode, 0);
+    EXPECT_THAT(once.err, HasSubstr("node 'write' (CinemaWriter): database " + r.dir.file("out/shaded.cdb") +
+                                    " already exists and is not empty; " + advice));
+    // The advice works.
+    EXPECT_EQ(r.shade({"--set", "write.mode=overwrite"}).exitCode, 0);
+}

@@ -1,7 +1,9 @@
 #pragma once
 // The small text helpers every part of Darkroom needs, in one place:
-// trimming, splitting, joining. Header-only (inline), so they add nothing to
-// the SDK's ABI and a plugin uses them without linking anything more.
+// trimming, splitting, joining, and the "did you mean" of messages.
+// Header-only (inline), so they add nothing to the SDK's ABI and a plugin
+// uses them without linking anything more.
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,6 +77,48 @@ std::string join(const Parts& parts, std::string_view separator) {
         first = false;
     }
     return out;
+}
+
+// Edits (insert, delete, replace, swap two neighbours) from a to b: the
+// optimal string alignment distance, so "paramters" and "egdes" are 1 away.
+inline std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// The valid name closest to `name` by edit distance, if it is close enough to
+// be a misspelling of it (at most a third of its letters wrong); "" if none.
+// The one spelling check of every message that names what was meant: keys of
+// pipeline and scene files, node types, nodes, ports, colour-map presets.
+inline std::string nearestName(std::string_view name, const std::vector<std::string>& valid) {
+    std::string best;
+    std::size_t bestDistance = 0;
+    // Names are short; anything long is no misspelling of one.
+    if (name.size() > 64) return best;
+    for (const auto& v : valid) {
+        const std::size_t d = editDistance(name, v);
+        if (d * 3 > std::max(v.size(), std::size_t(3))) continue;
+        if (best.empty() || d < bestDistance) {
+            best = v;
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+// " (did you mean 'parameters'?)" when `name` looks like a misspelling of one
+// of `valid`, else "": appended to a message that names what is unknown.
+inline std::string didYouMean(std::string_view name, const std::vector<std::string>& valid) {
+    const std::string near = nearestName(name, valid);
+    return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
 }
 
 }  // namespace darkroom

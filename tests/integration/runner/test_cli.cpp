@@ -219,3 +219,178 @@ edges:
     EXPECT_EQ(one.exitCode, 0) << one.err;
     EXPECT_TRUE(fs::exists(c.dir.file("out/name_label=a~b.png")));
 }
+
+namespace {
+
+// A database of three entries sharing scalar.exr whose data.csv has an
+// irregular row, as tolerant readers meet in the wild.
+void writeIrregularDatabase(const ColourMapCase& c, const std::string& name) {
+    namespace fs = std::filesystem;
+    fs::create_directories(c.dir.file(name));
+    fs::copy_file(c.dir.file("scalar.exr"), c.dir.file(name + "/scalar.exr"));
+    test::writeText(c.dir.file(name + "/data.csv"), "time,FILE\n0,scalar.exr\n1,scalar.exr,extra\n2,scalar.exr\n");
+}
+
+const char* kForeachPipeline = R"(darkroom: 1
+nodes:
+  read: {type: CinemaReader, parameters: {database: db.cdb}}
+  colour: {type: ColorMapping, parameters: {channel: value}}
+  write: {type: ImageWriter, parameters: {path: name.png}}
+edges:
+  - read.image -> colour.image
+  - colour.image -> write.image
+)";
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+// Issue 29 item 7: a misspelt node type, type to describe, node or port of
+// --set is answered with the nearest name (one spelling check, darkroom/strings.h).
+TEST(RunnerCli, DidYouMeanForNodeTypesDescribeAndSet) {
+    ColourMapCase c;
+    test::writeText(c.dir.file("typo.yaml"), "darkroom: 1\nnodes:\n  x:\n    type: ColorMaping\n");
+    const auto v = runDarkroom({"validate", c.dir.file("typo.yaml")});
+    EXPECT_EQ(v.exitCode, 2);
+    EXPECT_NE(v.err.find("typo.yaml:4:11: error: unknown node type 'ColorMaping' for node 'x' (did you mean "
+                         "'ColorMapping'?)"),
+              std::string::npos)
+        << v.err;
+    const auto d = runDarkroom({"describe", "ColorMaping"});
+    EXPECT_EQ(d.exitCode, 2);
+    EXPECT_NE(d.err.find("unknown node type 'ColorMaping' (did you mean 'ColorMapping'?)"), std::string::npos) << d.err;
+    const auto node = runDarkroom({"run", c.dir.file("p.yaml"), "--set", "colur.colormap=magma"});
+    EXPECT_EQ(node.exitCode, 2);
+    EXPECT_NE(node.err.find("--set 'colur.colormap=magma': no node named 'colur' in the pipeline (did you mean "
+                            "'colour'?)"),
+              std::string::npos)
+        << node.err;
+    const auto port = runDarkroom({"run", c.dir.file("p.yaml"), "--set", "colour.colormp=magma"});
+    EXPECT_EQ(port.exitCode, 2);
+    EXPECT_NE(port.err.find("node 'colour' (ColorMapping) has no input 'colormp' (did you mean 'colormap'?); inputs "
+                            "that take a value: "),
+              std::string::npos)
+        << port.err;
+    // A misspelt preset met while running: bad input, as a missing file is.
+    const auto preset = runDarkroom({"run", c.dir.file("p.yaml"), "--set", "colour.colormap=virdis"});
+    EXPECT_EQ(preset.exitCode, 2);
+    EXPECT_NE(preset.err.find("node 'colour' (ColorMapping): colour map '" + c.dir.file("virdis") +
+                              "': no such file, and not a preset name (did you mean 'viridis'?)"),
+              std::string::npos)
+        << preset.err;
+    // Nothing near: no guess.
+    const auto far = runDarkroom({"describe", "Frobnicator"});
+    EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+// validate checks what the pipeline names exists, at the node's line:
+// colour maps (a preset, with the nearest one suggested, or a file), Path
+// inputs, and an entry reader's database; it reads no image.
+TEST(RunnerCli, ValidateChecksColourMapsFilesAndDatabases) {
+    ColourMapCase c;
+    namespace fs = std::filesystem;
+    fs::create_directories(c.dir.file("empty.cdb"));
+    test::writeText(c.dir.file("v.yaml"), R"(darkroom: 1
+nodes:
+  read: {type: CinemaReader, parameters: {database: empty.cdb}}
+  gone: {type: CinemaReader, parameters: {database: gone.cdb}}
+  img: {type: ImageReader, parameters: {path: nothing.exr}}
+  preset: {type: ColorMapping, parameters: {channel: value, colormap: Virdis}}
+  json: {type: ColorMapping, parameters: {channel: value, colormap: maps/none.json}}
+  w1: {type: ImageWriter, parameters: {path: a.png}}
+  w2: {type: ImageWriter, parameters: {path: b.png}}
+  w3: {type: ImageWriter, parameters: {path: c.png}}
+edges:
+  - read.image -> preset.image
+  - preset.image -> w1.image
+  - img.image -> json.image
+  - json.image -> w2.image
+  - gone.image -> w3.image
+)");
+    const auto r = runDarkroom({"validate", c.dir.file("v.yaml")});
+    EXPECT_EQ(r.exitCode, 2);
+    const std::string v = c.dir.file("v.yaml");
+    for (const std::string& expected :
+         {v + ":3:3: error: node 'read' (CinemaReader): database: '" + c.dir.file("empty.cdb") +
+              "' is not a Cinema database: it has no data.csv",
+          v + ":4:3: error: node 'gone' (CinemaReader): database: cannot open Cinema database '" +
+              c.dir.file("gone.cdb") + "': no such file or directory",
+          v + ":5:3: error: node 'img' (ImageReader): path 'nothing.exr': " + c.dir.file("nothing.exr") +
+              " does not exist; expected a file or folder to read",
+          v + ":6:3: error: node 'preset' (ColorMapping): colormap 'Virdis' is neither a preset (did you mean "
+              "'viridis'?) nor a file",
+          v + ":7:3: error: node 'json' (ColorMapping): colormap 'maps/none.json' is neither a preset nor a file (" +
+              c.dir.file("maps/none.json") + " does not exist); expected one of viridis,"})
+        EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
+    EXPECT_EQ(count(r.err, "\n"), 5u) << r.err;
+
+    // What the pipeline itself writes may be read by it; a database whose
+    // data.csv is irregular passes with the tolerant reader's warning.
+    writeIrregularDatabase(c, "db.cdb");
+    test::writeText(c.dir.file("ok.yaml"), R"(darkroom: 1
+nodes:
+  read: {type: CinemaReader, parameters: {database: db.cdb}}
+  first: {type: ImageWriter, parameters: {path: made/first.exr}}
+  again: {type: ImageReader, parameters: {path: made/first.exr}}
+  second: {type: ImageWriter, parameters: {path: second.exr}}
+edges:
+  - read.image -> first.image
+  - again.image -> second.image
+)");
+    const auto ok = runDarkroom({"validate", c.dir.file("ok.yaml")});
+    EXPECT_EQ(ok.exitCode, 0) << ok.err;
+    EXPECT_NE(ok.err.find("ok.yaml:3:3: warning: node 'read' (CinemaReader): " + c.dir.file("db.cdb/data.csv") +
+                          ":3: row has more cells than the header"),
+              std::string::npos)
+        << ok.err;
+    EXPECT_FALSE(fs::exists(c.dir.file("made"))) << "validate writes nothing";
+}
+
+// docs/cli.md: a missing database is bad input (exit 2), whichever command
+// meets it, and the message names the node that reads it.
+TEST(RunnerCli, MissingDatabaseExits2Everywhere) {
+    ColourMapCase c;
+    test::writeText(c.dir.file("each.yaml"), kForeachPipeline);
+    const auto info = runDarkroom({"info", c.dir.file("db.cdb")});
+    EXPECT_EQ(info.exitCode, 2) << info.err;
+    EXPECT_NE(info.err.find("cannot open Cinema database '" + c.dir.file("db.cdb") + "'"), std::string::npos)
+        << info.err;
+    for (const std::vector<std::string>& more : {std::vector<std::string>{}, {"--foreach", "read"}}) {
+        std::vector<std::string> args{"-q", "run", c.dir.file("each.yaml"), "-o", c.dir.file("out")};
+        args.insert(args.end(), more.begin(), more.end());
+        const auto r = runDarkroom(args);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_NE(r.err.find("error: node 'read' (CinemaReader): cannot open Cinema database '" +
+                             c.dir.file("db.cdb") + "': no such file or directory"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(count(r.err, "\n"), 1u) << r.err;
+    }
+    // A folder without data.csv is no database either.
+    std::filesystem::create_directories(c.dir.file("db.cdb"));
+    const auto empty = runDarkroom({"-q", "run", c.dir.file("each.yaml"), "-o", c.dir.file("out")});
+    EXPECT_EQ(empty.exitCode, 2) << empty.err;
+    EXPECT_NE(empty.err.find("it has no data.csv"), std::string::npos) << empty.err;
+}
+
+// The tolerant reader's warning about data.csv comes at every entry of
+// --foreach: printed once, with the count at the end of the run.
+TEST(RunnerCli, ForeachFoldsARepeatedWarningIntoOneLineWithItsCount) {
+    ColourMapCase c;
+    writeIrregularDatabase(c, "db.cdb");
+    test::writeText(c.dir.file("each.yaml"), kForeachPipeline);
+    const auto r = runDarkroom({"-q", "run", c.dir.file("each.yaml"), "--foreach", "read", "-o", c.dir.file("out")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(c.dir.file("out/name_time=2.png")));
+    const std::string warning = "node 'read' (CinemaReader): warning: " + c.dir.file("db.cdb/data.csv") +
+                                ":3: row has more cells than the header";
+    EXPECT_EQ(count(r.err, warning), 2u) << r.err;  // once as it comes, once in the note
+    EXPECT_NE(r.err.find("darkroom: note: given 3 times in this run, shown once above: " + warning),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(count(r.err, "\n"), 2u) << r.err;
+}

@@ -7,6 +7,7 @@
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/composable.h>
 #include <darkroom/data/cinema/consistency.h>
+#include <darkroom/data/cinema/product.h>
 #include <darkroom/data/formats/npy.h>
 
 #include <fmt/format.h>
@@ -38,8 +39,9 @@ struct Header {
 // products that are not images.
 std::optional<Header> readHeader(const std::string& path) {
     const std::string ext = extensionOf(path);
-    // .csv: a point list (scene/point_list.h), no pixels to compare.
-    if (ext == ".vti" || ext == ".csv") return std::nullopt;
+    // .csv: a point list (scene/point_list.h), no pixels to compare; a mesh
+    // or a volume neither (describe() says what to do with it).
+    if (ext == ".vti" || ext == ".csv" || geometryProduct(path)) return std::nullopt;
     Header h;
     if (ext == ".npz") {
         // Outside a composable image set an .npz is a numpy image: (rows, columns).

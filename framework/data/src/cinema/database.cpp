@@ -66,7 +66,7 @@ CinemaDatabase CinemaDatabase::open(const std::string& path, const CsvReadOption
         db.folder_ = path;
         db.csvPath_ = (fs::path(path) / "data.csv").string();
         if (!fs::exists(db.csvPath_, ec))
-            throw Error(fmt::format("'{}' is not a Cinema database: it has no data.csv", path));
+            throw InputError(fmt::format("'{}' is not a Cinema database: it has no data.csv", path));
     } else if (fs::exists(path, ec)) {
         // A mesh or image given where a database was meant would otherwise be
         // read as a one-column table of its bytes.
@@ -78,7 +78,7 @@ CinemaDatabase CinemaDatabase::open(const std::string& path, const CsvReadOption
         db.folder_ = fs::path(path).parent_path().string();
         if (db.folder_.empty()) db.folder_ = ".";
     } else {
-        throw Error(fmt::format("cannot open Cinema database '{}': no such file or directory", path));
+        throw InputError(fmt::format("cannot open Cinema database '{}': no such file or directory", path));
     }
     db.table_ = readCsvFile(db.csvPath_, options);
 

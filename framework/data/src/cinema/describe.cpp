@@ -64,7 +64,10 @@ CinemaDescription CinemaDatabase::describe() const {
         } else {
             p.path = productPath(row, p.column);
             try {
-                if (hasExtension(p.path, ".npz")) {
+                if (const auto geometry = geometryProduct(p.path)) {
+                    p.geometry = geometry->what;
+                    p.geometryAdvice = geometry->advice;
+                } else if (hasExtension(p.path, ".npz")) {
                     describeNpz(p, isComposableImageSet(*this));
                 } else if (hasExtension(p.path, ".csv")) {
                     const PointList points = readPointListCsv(p.path);
@@ -141,6 +144,10 @@ std::string formatDescription(const CinemaDescription& d) {
         }
         if (p.pointList) {
             for (const auto& line : p.details) out += fmt::format("  {}\n", line);
+            continue;
+        }
+        if (!p.geometry.empty()) {
+            out += fmt::format("  not images: {} is {}\n  {}\n", p.path, p.geometry, p.geometryAdvice);
             continue;
         }
         out += fmt::format("  size     {} x {}\n", p.width, p.height);

@@ -143,7 +143,8 @@ struct CinemaWriter::Impl {
         if (!compareOrigin) return;
         const std::string change = cinema_detail::describeOriginChange(*recorded, origin());
         if (!change.empty())
-            throw Error(fmt::format("cannot resume {}: {}; use --overwrite to start afresh", folder, change));
+            throw Error(fmt::format("cannot resume {}: {}; use {} to start afresh", folder, change,
+                                    options.overwriteAdvice));
     }
 
     std::string stemOf(const std::vector<std::string>& cells) const {
@@ -254,8 +255,8 @@ struct CinemaWriter::Impl {
             for (const auto& p : contents())
                 if (!isOwnFile(p))
                     throw Error(fmt::format("cannot resume {}: it has no data.csv, so it is not a Cinema "
-                                            "database written by Darkroom; use --overwrite to replace it",
-                                            folder));
+                                            "database written by Darkroom; use {} to replace it",
+                                            folder, options.overwriteAdvice));
             return std::nullopt;
         }
         CsvReadOptions strict;
@@ -263,8 +264,8 @@ struct CinemaWriter::Impl {
         try {
             return readCsvFile(csvPath, strict);
         } catch (const Error& e) {
-            throw Error(fmt::format("cannot resume {}: {}; use --overwrite to start afresh", folder,
-                                    e.what()));
+            throw Error(fmt::format("cannot resume {}: {}; use {} to start afresh", folder, e.what(),
+                                    options.overwriteAdvice));
         }
     }
 
@@ -282,8 +283,9 @@ struct CinemaWriter::Impl {
         for (const auto& a : options.attachments) expected.push_back(a.column);
         if (table.header != expected)
             throw Error(fmt::format("cannot resume {}: its columns are {} but this capture writes {}; "
-                                    "use --overwrite to replace it",
-                                    folder, fmt::join(table.header, ","), fmt::join(expected, ",")));
+                                    "use {} to replace it",
+                                    folder, fmt::join(table.header, ","), fmt::join(expected, ","),
+                                    options.overwriteAdvice));
         // Only once nothing refuses the resume: a refusal leaves the folder as it was.
         removeTemporaryLeftovers();
         const std::size_t extra = options.attachments.size();
@@ -373,9 +375,9 @@ struct CinemaWriter::Impl {
         } else if (options.overwrite) {
             removeForOverwrite(apply);
         } else {
-            throw Error(fmt::format("database {} already exists and is not empty; use --overwrite "
-                                    "to replace it or --resume to complete it",
-                                    folder));
+            throw Error(fmt::format("database {} already exists and is not empty; use {} to replace it or {} "
+                                    "to complete it",
+                                    folder, options.overwriteAdvice, options.resumeAdvice));
         }
     }
 
@@ -429,6 +431,11 @@ void moveFileInto(const fs::path& from, const fs::path& to) {
 }
 
 }  // namespace
+
+void adviseNodeMode(CinemaWriterOptions& options, const std::string& node) {
+    options.overwriteAdvice = "mode: overwrite (--set " + node + ".mode=overwrite)";
+    options.resumeAdvice = "mode: resume (--set " + node + ".mode=resume)";
+}
 
 CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnNames,
                            CinemaWriterOptions options)

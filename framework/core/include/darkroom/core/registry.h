@@ -64,6 +64,9 @@ public:
     const RegisteredBackend* backend(const std::string& type) const;
     std::vector<const RegisteredFilter*> filters() const;    // sorted by type
     std::vector<const RegisteredBackend*> backends() const;  // sorted by type
+    // The type names of filters() (and, with `backends`, of backends()),
+    // sorted: what a "did you mean" picks from.
+    std::vector<std::string> typeNames(bool withBackends = false) const;
     const std::vector<LoadedPlugin>& plugins() const { return plugins_; }
 
     // Creates a filter through the plugin error boundary; throws darkroom::Error

@@ -27,8 +27,4 @@ inline constexpr std::uint64_t kAliasByteBudget = std::uint64_t(64) << 20;
 // as yaml-cpp's own syntax errors are; its `msg` is a sentence for the user.
 DARKROOM_API YAML::Node load(const std::string& text);
 
-// The valid key closest to `key` by edit distance, if it is close enough to
-// be a misspelling of it (at most a third of its letters wrong); "" if none.
-DARKROOM_API std::string nearestKey(const std::string& key, const std::vector<std::string>& valid);
-
 }  // namespace darkroom::yamlguard

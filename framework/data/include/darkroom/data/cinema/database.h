@@ -53,6 +53,9 @@ struct CinemaProductInfo {
     // A .csv product is a point list (scene/point_list.h), not an image:
     // `details` says how many points and which columns.
     bool pointList = false;
+    // A mesh or a volume (product.h, geometryProduct): what it is, and what
+    // to do with it instead of shading (capture it into G-buffers).
+    std::string geometry, geometryAdvice;
 };
 
 // What `darkroom info` prints.

@@ -89,14 +89,26 @@ struct CinemaWriterOptions {
     std::vector<CinemaAttachmentColumn> attachments;
     // What this database is made from; recorded in the marker, compared by a resume.
     std::vector<CinemaOriginItem> origin;
+    // How the user asks for overwrite and resume, as a refusal advises them
+    // ("use --overwrite to replace it"): the command line's options of
+    // `darkroom capture` unless the caller says otherwise (adviseNodeMode).
+    std::string overwriteAdvice = "--overwrite";
+    std::string resumeAdvice = "--resume";
 };
+
+// Sets the advice for a node whose `mode` parameter chooses between create,
+// overwrite and resume (the CinemaWriter node): `darkroom run` has no
+// --overwrite, so a refusal names the parameter and the --set that sets it
+// ("mode: overwrite (--set write.mode=overwrite)").
+DARKROOM_API void adviseNodeMode(CinemaWriterOptions& options, const std::string& node);
 
 class DARKROOM_API CinemaWriter {
 public:
     // Creates (or, with overwrite/resume, reopens) the database folder and
     // locks it (flock on `<path>/.lock`, held until finish() or destruction).
     // Throws darkroom::Error when the folder exists and is not empty without
-    // overwrite/resume ("use --overwrite or --resume"), when another process
+    // overwrite/resume ("use --overwrite ... or --resume ...", in the words of
+    // options.overwriteAdvice and resumeAdvice), when another process
     // holds the lock ("being written by another process (pid N)"), or when
     // the column names are unusable.
     CinemaWriter(std::string path, std::vector<std::string> columnNames,
