@@ -97,7 +97,7 @@ TEST(InSitu, ASessionWritesWhatDarkroomCaptureWritesForTheSameGeometry) {
               "    - {position: [2.2, 1.0, 1.5], target: [0, 0.1, 0], up: [0, 0, 1]}\n"
               "channels:\n"
               "  scalars: [height]\n"
-              "  normals: true\n"
+              "  normals: geometric\n"  // what the in situ API stores (docs/insitu.md, Normals)
               "  objectId: true\n"
               "  primitiveId: true\n");
     const std::string captured = runnerOutput("capture " + dir.file("scene.yaml") + " -o " + dir.file("file.cdb") + " -q");

@@ -1,6 +1,6 @@
 // `mpirun -np N darkroom capture` equals `darkroom capture` byte for byte:
-// data.csv and every product, with ids, normals and fields, on a scene whose
-// parts are read piece-wise (.pvtp) or split (generators and a whole file),
+// data.csv and every product, with ids, smooth normals and fields, on a scene
+// whose parts are read piece-wise (.pvtp) or split (generators and a whole file),
 // and whose coincident spheres tie in depth across ranks: "dots" (pieces,
 // split by piece) and "dots_whole" (the same points in one file, split by
 // count) put the same sphere on different ranks, and the lower object id
@@ -27,6 +27,8 @@ const char* kScene =
     "    parameters: {count: 16}\n"
     "  - generator: particles\n"
     "    parameters: {count: 800}\n"
+    "  - generator: isosurface\n"  // a surface loaded whole and split: smooth normals made before the split
+    "    parameters: {resolution: 12}\n"
     "  - file: field_all.vtp\n"
     "    name: dots_whole\n"
     "    representation: points\n"

@@ -5,7 +5,7 @@
 // one vertex a line and one face a line ("n i0 ... i(n-1)", 0-based, fan-
 // triangulated like OBJ and PLY polygons). Normals (N), colours (C) and
 // texture coordinates (ST) after a vertex's x y z and a colour after a face's
-// indices are ignored: capture computes geometric normals and colours by
+// indices are ignored: capture computes normals from the geometry and colours by
 // fields. '#' starts a comment anywhere. Lines matter: only the line's end
 // tells a face's colour from its indices.
 #include "poly_mesh.h"

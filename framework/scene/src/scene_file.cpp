@@ -2,6 +2,7 @@
 // darkroom::InputError at "scene.yaml:line:column" (1-based); reader and
 // generator errors are prefixed with the object that asked for them.
 #include "generator_seam.h"
+#include "normals/scene_normals.h"
 #include "object_style.h"
 #include "partition/agreement.h"
 #include "partition/parallel_vtk.h"
@@ -42,8 +43,8 @@ public:
     // With a group, the scene is loaded over several processes
     // (scene_partition.h): parallel files are read piece-wise and the bounds
     // that cameras and default radii depend on are agreed.
-    Parser(std::string source, std::string baseDir, ProcessGroup* group = nullptr)
-        : source_(std::move(source)), baseDir_(std::move(baseDir)), group_(group) {}
+    Parser(std::string source, std::string baseDir, ProcessGroup* group = nullptr, SceneLoadOptions options = {})
+        : source_(std::move(source)), baseDir_(std::move(baseDir)), group_(group), options_(options) {}
 
     // Per object of the parsed scene: whether it holds only this process's
     // pieces (a parallel file read over a group) rather than the whole object.
@@ -59,11 +60,15 @@ public:
         const YAML::Node objects = root["objects"];
         if (!objects) fail(root, "missing 'objects' (a list of objects to draw)");
         if (!objects.IsSequence() || objects.size() == 0) fail(objects, "'objects' must be a non-empty list");
+        // Known before the objects load: isosurfaces then keep their gradient.
+        const bool normalsOn = normalsChannel(root["channels"], d.normals);
+        vertexNormals_ = (normalsOn || options_.normals) && d.normals.style == NormalsOptions::Style::Smooth;
         for (const auto& o : objects) loadObject(o, *d.scene, d.warnings, d.pointLists);
         defaultRadii(*d.scene);
         defaultPointListRadii(*d.scene, d.pointLists);
         if (root["backend"]) d.backend = text(root["backend"], "backend");
-        d.request = channels(root["channels"], *d.scene, root);
+        d.request = channels(root["channels"], *d.scene, normalsOn);
+        if (vertexNormals_) scenefile::attachShadingNormals(*d.scene, shading_, d.normals.featureAngle);
         d.cameras = cameras(root["cameras"], *d.scene);
         for (const auto& c : d.cameras) checkRayOrigin(root["cameras"] ? root["cameras"] : root, c);
         d.inputFiles = inputFiles_;
@@ -206,8 +211,11 @@ private:
                                                       " needs a volume file (.vtu with 3D cells or .vti)");
                     const VolumeMesh& vol = volume(path, warnings);
                     // A boundary of a file of surfaces is those surfaces (as ParaView's Extract Surface).
-                    if (vol.volumeCellCount() > 0 || (volumeRep && volumeRep->kind == VolumeRepresentation::Kind::Boundary))
-                        return {volumeSurface(vol, volumeRep.value_or(VolumeRepresentation{}), name)};
+                    if (vol.volumeCellCount() > 0 || (volumeRep && volumeRep->kind == VolumeRepresentation::Kind::Boundary)) {
+                        VolumeRepresentation r = volumeRep.value_or(VolumeRepresentation{});
+                        r.gradientNormals = vertexNormals_;
+                        return {volumeSurface(vol, r, name)};
+                    }
                     if (volumeRep)
                         fail(o["representation"], "representation " + std::string(toString(volumeRep->kind)) +
                                                       " needs 3D cells, and '" + path + "' has none");
@@ -234,7 +242,7 @@ private:
             }
             const std::string generator = text(o["generator"], "generator");
             if (scene_detail::generatorParameterFilter) scene_detail::generatorParameterFilter(generator, params);
-            return generate(generator, params);
+            return generate(generator, params, GenerateOptions{vertexNormals_});
         } catch (const Error& e) {
             const YAML::Node at = hasFile ? o["file"] : o["generator"];
             const std::string msg = e.what();
@@ -265,6 +273,10 @@ private:
         loadingPointList_ = asPointList;
         std::vector<SceneObject> parts = loadParts(o, name, warnings, volumeRep);
         loadingPointList_ = false;
+        // Held aside until every object is loaded (scene_normals.h).
+        std::vector<VertexNormals> shading(parts.size());
+        if (vertexNormals_ && !asPointList)
+            for (std::size_t i = 0; i < parts.size(); ++i) shading[i] = scenefile::takeShadingNormals(parts[i]);
 
         Vec3 scale{1, 1, 1}, translate{0, 0, 0};
         if (const YAML::Node s = o["scale"]) {
@@ -302,11 +314,14 @@ private:
             }
             for (auto& p : parts) scenefile::keepFields(p, wanted);
         }
-        for (auto& p : parts) {
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+            SceneObject& p = parts[i];
             if (parts.size() > 1 && o["name"]) p.name = name + p.name.substr(p.name.rfind('/'));
             else if (o["name"]) p.name = name;
             scenefile::transform(p, scale, translate);
+            scaleVertexNormals(shading[i], scale);
             if (rep) p = scenefile::restyle(std::move(p), *rep);
+            if (p.representation != Representation::Surface) VertexNormals().swap(shading[i]);
             if (asPointList && p.representation != Representation::Points)
                 p = scenefile::restyle(std::move(p), Representation::Points);
             if (radius) scenefile::setRadius(p, *radius);
@@ -318,6 +333,7 @@ private:
             } else {
                 scene.objects.push_back(std::move(p));
                 pieceWise_.push_back(loadedPieceWise_);
+                shading_.push_back(std::move(shading[i]));
             }
         }
     }
@@ -349,7 +365,34 @@ private:
         }
     }
 
-    CaptureRequest channels(const YAML::Node& n, const Scene& scene, const YAML::Node& root) const {
+    // `channels: normals` (true = smooth, smooth, geometric, false) and
+    // `featureAngle` into `out`; returns whether the normal channels are on.
+    bool normalsChannel(const YAML::Node& n, NormalsOptions& out) const {
+        if (!n || !n.IsMap()) return false;  // channels() reports a bad map
+        bool on = false;
+        if (const YAML::Node v = n["normals"]) {
+            const std::string s = v.IsScalar() ? v.Scalar() : std::string();
+            if (s == "smooth" || s == "geometric") {
+                on = true;
+                out.style = s == "smooth" ? NormalsOptions::Style::Smooth : NormalsOptions::Style::Geometric;
+            } else if (s == "true" || s == "yes" || s == "on" || s == "false" || s == "no" || s == "off") {
+                on = boolean(v, "normals");
+            } else {
+                fail(v, "normals must be smooth (or true: interpolated vertex normals), geometric (each triangle's "
+                        "own normal) or false");
+            }
+        }
+        if (const YAML::Node a = n["featureAngle"]) {
+            if (out.style == NormalsOptions::Style::Geometric)
+                fail(a, "'featureAngle' only applies to smooth normals (normals: smooth or true)");
+            out.featureAngle = number(a, "featureAngle");
+            if (out.featureAngle < 0 || out.featureAngle > 180)
+                fail(a, "featureAngle must lie in [0, 180] degrees");
+        }
+        return on;
+    }
+
+    CaptureRequest channels(const YAML::Node& n, const Scene& scene, bool normalsOn) const {
         CaptureRequest req;
         std::vector<std::string> available;
         for (const auto& o : scene.objects)
@@ -357,8 +400,8 @@ private:
                 if (std::find(available.begin(), available.end(), f.name) == available.end()) available.push_back(f.name);
         req.scalars = available;
         if (!n) return req;
-        if (!n.IsMap()) fail(n, "'channels' must be a map (scalars, normals, objectId, primitiveId)");
-        checkKeys(n, {"scalars", "normals", "objectId", "primitiveId"}, "channels");
+        if (!n.IsMap()) fail(n, "'channels' must be a map (scalars, normals, featureAngle, objectId, primitiveId)");
+        checkKeys(n, {"scalars", "normals", "featureAngle", "objectId", "primitiveId"}, "channels");
         if (const YAML::Node s = n["scalars"]) {
             req.scalars = names(s, "scalars");
             for (std::size_t i = 0; i < req.scalars.size(); ++i)
@@ -369,10 +412,9 @@ private:
                                    (available.empty() ? std::string("the objects keep no fields") : "kept fields: " + list) + ")");
                 }
         }
-        if (n["normals"]) req.normals = boolean(n["normals"], "normals");
+        req.normals = normalsOn;
         if (n["objectId"]) req.objectId = boolean(n["objectId"], "objectId");
         if (n["primitiveId"]) req.primitiveId = boolean(n["primitiveId"], "primitiveId");
-        (void)root;
         return req;
     }
 
@@ -524,6 +566,11 @@ private:
     mutable bool loadedPieceWise_ = false;  // set by loadParts for the object being loaded
     std::vector<bool> pieceWise_;
     bool loadingPointList_ = false;
+    SceneLoadOptions options_;
+    // Whether surfaces get vertex normals, and those held per scene object
+    // until all are loaded (scene_normals.h).
+    bool vertexNormals_ = false;
+    std::vector<VertexNormals> shading_;
 };
 
 [[noreturn]] void yamlError(const std::string& sourceName, const YAML::Exception& e) {
@@ -542,19 +589,20 @@ YAML::Node loadYaml(const std::string& yamlText, const std::string& sourceName) 
 
 }  // namespace
 
-SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir) {
+SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir,
+                                const SceneLoadOptions& options) {
     const YAML::Node root = loadYaml(yamlText, sourceName);
     try {
-        return Parser(sourceName, baseDir).parse(root);
+        return Parser(sourceName, baseDir, nullptr, options).parse(root);
     } catch (const YAML::Exception& e) {
         // A conversion yaml-cpp itself refused (should be rare: values are parsed here).
         yamlError(sourceName, e);
     }
 }
 
-SceneDescription loadSceneFile(const std::string& path) {
+SceneDescription loadSceneFile(const std::string& path, const SceneLoadOptions& options) {
     const std::string text = readInputFile(path, "scene file");
-    return parseSceneFile(text, path, std::filesystem::path(path).parent_path().string());
+    return parseSceneFile(text, path, std::filesystem::path(path).parent_path().string(), options);
 }
 
 PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::string& sourceName,

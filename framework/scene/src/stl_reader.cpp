@@ -1,8 +1,9 @@
 // STL (stereolithography), ASCII and binary: a soup of triangles, each with
 // its own three positions. Facet normals are ignored (capture computes
-// geometric normals from the vertices) and so is the binary attribute word
-// (some tools keep a colour there). Triangles of zero area are kept (a ray
-// never hits them); a non-finite coordinate is refused.
+// normals from the vertices: each triangle's, or averaged at the vertices)
+// and so is the binary attribute word (some tools keep a colour there).
+// Triangles of zero area are kept (a ray never hits them); a non-finite
+// coordinate is refused.
 //
 // Identical positions are merged into one vertex, numbered in first use, so
 // an STL reads as the same vertices and triangles as the OBJ or PLY of the

@@ -34,7 +34,13 @@ std::vector<CinemaOriginItem> captureOrigin(const std::string& sceneFile, const 
     std::string channels;
     auto addChannel = [&](const std::string& c) { channels += (channels.empty() ? "" : ",") + c; };
     for (const auto& s : scene.request.scalars) addChannel(s);
-    if (scene.request.normals) addChannel("normals");
+    // Geometric normals keep the name databases captured before smooth
+    // normals existed have, so those resume; a smooth capture does not mix
+    // with them, nor with one at another feature angle.
+    if (scene.request.normals)
+        addChannel(scene.normals.style == NormalsOptions::Style::Geometric
+                       ? std::string("normals")
+                       : fmt::format("smooth normals (feature angle {})", scene.normals.featureAngle));
     if (scene.request.objectId) addChannel("objectId");
     if (scene.request.primitiveId) addChannel("primitiveId");
     ContentHash content;

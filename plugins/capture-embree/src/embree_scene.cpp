@@ -61,8 +61,21 @@ ObjectView viewOf(const SceneObject& o) {
     v.indices = o.indices.data();
     v.primitiveCount = primitiveCountOf(o);
     v.primitiveCell = o.primitiveCell.empty() ? nullptr : o.primitiveCell.data();
+    // The scene library's convention for vertex normals: all three point
+    // fields, one value per vertex, on a surface; anything else stays a field.
+    static const char* const kNormalFields[3] = {"N.x", "N.y", "N.z"};
+    const ScalarField* normal[3] = {nullptr, nullptr, nullptr};
     for (const auto& f : o.fields)
+        for (int a = 0; a < 3; ++a)
+            if (f.name == kNormalFields[a] && f.association == ScalarField::Association::Point &&
+                f.values.size() == v.vertexCount)
+                normal[a] = &f;
+    const bool normals = o.representation == Representation::Surface && normal[0] && normal[1] && normal[2];
+    for (int a = 0; normals && a < 3; ++a) v.normals[a] = normal[a]->values.data();
+    for (const auto& f : o.fields) {
+        if (normals && (&f == normal[0] || &f == normal[1] || &f == normal[2])) continue;
         v.fields.push_back({f.name, f.values.data(), f.values.size(), f.association == ScalarField::Association::Cell});
+    }
     return v;
 }
 

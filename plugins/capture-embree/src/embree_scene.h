@@ -54,6 +54,9 @@ struct ObjectView {
     std::size_t primitiveCount = 0;
     // Primitive -> cell for cell fields; nullptr: primitive i is cell i.
     const std::uint32_t* primitiveCell = nullptr;
+    // Surfaces: unit vertex normals, one x, y and z array, vertexCount long,
+    // interpolated at each hit; nullptr: the triangles' own normals.
+    const float* normals[3] = {nullptr, nullptr, nullptr};
     std::vector<FieldView> fields;
 
     const FieldView* field(const std::string& n) const {
@@ -67,6 +70,8 @@ struct ObjectView {
     }
 };
 
+// A scene object's arrays. A surface's point fields N.x, N.y and N.z are its
+// vertex normals (darkroom/scene/vertex_normals.h), not fields.
 ObjectView viewOf(const SceneObject& object);
 
 // The acceleration structure of one scene. Geometry ID i is object i.

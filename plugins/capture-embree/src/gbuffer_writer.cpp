@@ -35,8 +35,10 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
 GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request,
                              WritableBuffer& buffer) {
     for (const auto& o : objects) {
-        objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell});
+        objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell,
+                            {o.normals[0], o.normals[1], o.normals[2]}});
         hasPoints_ = hasPoints_ || o.representation == Representation::Points;
+        hasSmooth_ = hasSmooth_ || (request.normals && o.normals[0]);
     }
     z_ = buffer.writeFloat("Z");
     for (const auto& name : request.scalars) {
@@ -77,7 +79,7 @@ void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& til
     if (n_[0])
         for (std::size_t a = 0; a < 3; ++a) t.normal[a] = tile.channel(1 + nScalars + a) + cell[0];
     writePacketRows(p, t);
-    if (nScalars == 0 && !hasPoints_) return;
+    if (nScalars == 0 && !hasPoints_ && !hasSmooth_) return;
     const std::size_t nObjects = objects_.size();
     for (int k = 0; k < p.lanes; ++k) {
         if (!p.valid[k] || p.geomID[k] == kMissID) continue;
@@ -90,6 +92,14 @@ void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& til
             tile.channel(0)[c] = refineDepth(o, h, org, dir);
         }
         for (std::size_t s = 0; s < nScalars; ++s) tile.channel(1 + s)[c] = sample(o, fields_[s * nObjects + h.geomID], h);
+        if (smooth(o)) {
+            // The facing geometric normal writePacketRows left is the fallback.
+            float* plane[3] = {tile.channel(1 + nScalars), tile.channel(2 + nScalars), tile.channel(3 + nScalars)};
+            float n[3] = {plane[0][c], plane[1][c], plane[2][c]};
+            const float dir[3] = {p.dir[0][k], p.dir[1][k], p.dir[2][k]};
+            smoothNormal(o, h, dir, n);
+            plane[0][c] = n[0], plane[1][c] = n[1], plane[2][c] = n[2];
+        }
     }
 }
 

@@ -93,7 +93,7 @@ public:
     // cache misses of the 8 lanes of a packet overlap instead of queueing.
     void prefetch(const SurfaceHit& h) const {
         const ObjectRef& o = objects_[h.geomID];
-        if (scalars_.empty() && o.representation != Representation::Points) return;  // nothing to read
+        if (scalars_.empty() && o.representation != Representation::Points && !smooth(o)) return;  // nothing to read
         if (o.representation == Representation::Surface) __builtin_prefetch(o.indices + 3 * std::size_t(h.primID));
         else if (o.representation == Representation::Lines) __builtin_prefetch(o.indices + h.primID);
         else __builtin_prefetch(o.vertex(h.primID));
@@ -104,6 +104,11 @@ public:
     void prefetchFields(const SurfaceHit& h) const {
         const ObjectRef& o = objects_[h.geomID];
         const std::size_t nObjects = objects_.size();
+        if (smooth(o)) {
+            const std::uint32_t* i = o.indices + 3 * std::size_t(h.primID);
+            for (const float* n : o.normals)
+                for (int k = 0; k < 3; ++k) __builtin_prefetch(n + i[k]);
+        }
         for (std::size_t s = 0; s < scalars_.size(); ++s) {
             const FieldRef& f = fields_[s * nObjects + h.geomID];
             if (!f.values) continue;
@@ -139,6 +144,7 @@ public:
         if (n_[0]) {
             float n[3];
             facingNormal(h.ng[0], h.ng[1], h.ng[2], dir[0], dir[1], dir[2], n);
+            if (smooth(o)) smoothNormal(o, h, dir, n);
             n_[0][pixel] = n[0];
             n_[1][pixel] = n[1];
             n_[2][pixel] = n[2];
@@ -167,6 +173,7 @@ private:
         std::size_t stride;     // bytes between records
         const std::uint32_t* indices;
         const std::uint32_t* primitiveCell;  // nullptr: primitive i is cell i
+        const float* normals[3];             // vertex normals (surfaces), or nullptr
         const float* vertex(unsigned i) const {
             return reinterpret_cast<const float*>(reinterpret_cast<const char*>(vertices) + i * stride);
         }
@@ -220,8 +227,17 @@ private:
         return kNaN;
     }
 
+    // Whether normals are stored and this object's come from its vertices.
+    bool smooth(const ObjectRef& o) const { return n_[0] && o.normals[0]; }
+
+    // Replaces `n`, the unit geometric normal facing the ray, with the vertex
+    // normals interpolated at the hit (shading_normal.cpp); leaves it where
+    // they cancel out.
+    static void smoothNormal(const ObjectRef& o, const SurfaceHit& h, const float dir[3], float n[3]);
+
     std::vector<ObjectRef> objects_;
     bool hasPoints_ = false;  // sphere hits have their depth refined
+    bool hasSmooth_ = false;  // some object's normals are interpolated (and normals are stored)
     std::vector<FieldRef> fields_;  // [scalar * objects + object]
     float* z_ = nullptr;
     std::vector<float*> scalars_;

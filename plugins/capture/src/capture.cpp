@@ -12,6 +12,7 @@ struct Capture::Cache {
     std::filesystem::file_time_type mtime;
     std::string backendType;
     std::unique_ptr<SceneDescription> description;
+    bool normalsLoaded = false;  // the scene was loaded ready for normals
     std::unique_ptr<CaptureBackend> backend;
 };
 
@@ -26,13 +27,19 @@ void Capture::execute(Context& ctx) {
     if (ec) throw Error("cannot read scene file '" + path + "': " + ec.message());
     const std::string backendType = ctx.get(backend_);
 
-    // Reload when the file changed on disk; rebuild the BVH only when the
+    // Reload when the file changed on disk, or when normals are asked for
+    // and the scene was loaded without preparing them (smooth normals need
+    // vertex normals made while loading); rebuild the BVH only when the
     // scene or the backend changed.
-    if (!cache_ || cache_->path != path || cache_->mtime != mtime) {
+    const bool normals = ctx.get(normals_);
+    if (!cache_ || cache_->path != path || cache_->mtime != mtime || (normals && !cache_->normalsLoaded)) {
         auto fresh = std::make_unique<Cache>();
         fresh->path = path;
         fresh->mtime = mtime;
-        fresh->description = std::make_unique<SceneDescription>(loadSceneFile(path));
+        SceneLoadOptions options;
+        options.normals = normals;
+        fresh->description = std::make_unique<SceneDescription>(loadSceneFile(path, options));
+        fresh->normalsLoaded = normals || fresh->description->request.normals;
         cache_ = std::move(fresh);
     }
     if (!cache_->backend || cache_->backendType != backendType) {
@@ -56,7 +63,7 @@ void Capture::execute(Context& ctx) {
 
     CaptureRequest request = d.request;
     if (const auto list = splitList(ctx.get(scalars_)); !list.empty()) request.scalars = list;
-    request.normals = request.normals || ctx.get(normals_);
+    request.normals = request.normals || normals;
     if (ctx.get(ids_)) request.objectId = request.primitiveId = true;
 
     ctx.set(result_, cache_->backend->render(camera, request, ctx));

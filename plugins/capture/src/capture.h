@@ -34,7 +34,8 @@ private:
     IntIn width_{"width", 0, 0, 1 << 15, "Image width in pixels; 0 keeps the scene file's"};
     IntIn height_{"height", 0, 0, 1 << 15, "Image height in pixels; 0 keeps the scene file's"};
     StringIn scalars_{"scalars", "", "Comma-separated scalar fields to render; empty keeps the scene file's list"};
-    BoolIn normals_{"normals", false, "Also render normals (N.x, N.y, N.z), in addition to what the scene file asks for"};
+    BoolIn normals_{"normals", false, "Also render normals (N.x, N.y, N.z), in addition to what the scene file asks for; smooth unless "
+                         "the file says normals: geometric"};
     BoolIn ids_{"ids", false, "Also render objectId and primitiveId, in addition to what the scene file asks for"};
     ImageOut result_{"image",
                      "The G-buffer: Z (planar depth, +inf on background), scalars, optional normals and ids; "

@@ -4,6 +4,7 @@
 #include <darkroom/core/run_filter.h>
 #include <gtest/gtest.h>
 
+#include "test_meshes.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -126,6 +128,40 @@ TEST(Capture, OverridesResolutionAndChannels) {
     EXPECT_TRUE(b->hasChannel("objectId"));
     EXPECT_TRUE(b->hasChannel("primitiveId"));
     EXPECT_EQ(b->requireUInt("objectId")[3 * 10 + 5], 0u);
+}
+
+// The `normals` input on a scene file that stores none: the normals come in
+// the file's style, smooth unless it says geometric, so within one triangle
+// smooth normals vary and geometric ones do not. The node reloads the scene
+// once to prepare the vertex normals, and keeps it.
+TEST(Capture, NormalsInputGivesTheFilesStyle) {
+    TempDir dir;
+    writeObj(dir.file("sphere.obj"), uvSphere(8, 16, 1.0, {0, 0, -5}));
+    auto scene = [&](const std::string& name, const std::string& channels) {
+        writeText(dir.file(name), "objects: [{file: sphere.obj}]\ncameras:\n  resolution: [48, 48]\n  fov: 30\n"
+                                  "  list: [{position: [0, 0, 0], target: [0, 0, -5]}]\nchannels: {" + channels + "}\n");
+        return dir.file(name);
+    };
+    // How many pixels have a normal other than the first pixel of their triangle's.
+    auto varying = [](const BufferPtr& b) {
+        std::map<std::uint32_t, std::size_t> first;
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < b->pixelCount(); ++i) {
+            const std::uint32_t t = b->requireUInt("primitiveId")[i];
+            if (t == 0xFFFFFFFFu) continue;
+            const std::size_t j = first.emplace(t, i).first->second;
+            for (const char* c : {"N.x", "N.y", "N.z"}) n += b->requireFloat(c)[i] != b->requireFloat(c)[j];
+        }
+        return n;
+    };
+    auto f = makeCapture();
+    const std::string smooth = scene("smooth.yaml", "featureAngle: 40");
+    EXPECT_FALSE(run(*f, {{"scene", {Value(smooth)}}, {"ids", {Value(true)}}})->hasChannel("N.x"));
+    EXPECT_GT(varying(run(*f, {{"scene", {Value(smooth)}}, {"normals", {Value(true)}}, {"ids", {Value(true)}}})), 500u);
+    EXPECT_FALSE(run(*f, {{"scene", {Value(smooth)}}, {"ids", {Value(true)}}})->hasChannel("N.x"))
+        << "the input alone decides, as before";
+    const std::string flat = scene("geometric.yaml", "normals: geometric");
+    EXPECT_EQ(varying(run(*f, {{"scene", {Value(flat)}}, {"ids", {Value(true)}}})), 0u);
 }
 
 TEST(Capture, PicksUpAnEditedSceneFile) {

@@ -17,7 +17,8 @@ namespace darkroom {
 // database should store no more than shading needs.
 struct CaptureRequest {
     std::vector<std::string> scalars;  // field names; NaN where an object lacks the field
-    bool normals = false;              // world-space geometric normals "N.x", "N.y", "N.z"
+    bool normals = false;              // world-space normals "N.x", "N.y", "N.z" (a surface's vertex
+                                       // normals interpolated where it carries them, else geometric)
     bool objectId = false;             // "objectId" (uint32, index into Scene::objects; ~0u background)
     bool primitiveId = false;          // "primitiveId" (uint32)
 };

@@ -237,6 +237,28 @@ TEST(CaptureCli, ResumeRefusesAChangedSceneNamingTheChange) {
     EXPECT_EQ(folderBytes(db), before);
 }
 
+// Geometric and smooth normals do not mix in one database: the style is part
+// of the channels a resume compares. Geometric keeps the name databases had
+// before smooth normals, so those still resume with `normals: geometric`.
+TEST(CaptureCli, ResumeRefusesAnotherNormalsStyle) {
+    test::TempDir dir;
+    const std::string scene = "objects:\n  - generator: isosurface\n    parameters: {resolution: 16}\n"
+                              "cameras:\n  resolution: [32, 32]\n  grid: {phi: 2, theta: 1}\n"
+                              "channels: {normals: geometric}\n";
+    test::writeText(dir.file("s.yaml"), scene);
+    const std::string db = dir.file("db.cdb");
+    ASSERT_EQ(runDarkroom({"capture", dir.file("s.yaml"), "-o", db}).exitCode, 0);
+    EXPECT_NE(test::readText(db + "/.darkroom-database").find("normals"), std::string::npos);
+    std::string smooth = scene;
+    smooth.replace(smooth.find("geometric"), 9, "true");
+    test::writeText(dir.file("s.yaml"), smooth);
+    const auto r = runDarkroom({"capture", dir.file("s.yaml"), "-o", db, "--resume"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("magnitude,normals \u2192 height,field,gradient magnitude,smooth normals (feature angle 30))"),
+              std::string::npos)
+        << r.err;
+}
+
 // The meshes a scene names are part of what --resume compares (by name, size
 // and modification time): a scene file unchanged byte for byte whose mesh was
 // replaced used to resume, mixing the old mesh's products with the new one's.

@@ -13,6 +13,7 @@ namespace darkroom::generators {
 struct IsosurfaceOptions {
     int resolution = 64;  // grid samples per axis over [-1,1]^3
     double isovalue = 0.5;
+    bool normals = false;  // vertex normals from the field's gradient (vertex_normals.h)
 };
 IsosurfaceOptions readIsosurfaceOptions(GeneratorParams& p);
 SceneObject buildIsosurface(const IsosurfaceOptions& o);

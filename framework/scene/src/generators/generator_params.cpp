@@ -23,8 +23,9 @@ bool parseDouble(const std::string& text, double& out) {
 
 }  // namespace
 
-GeneratorParams::GeneratorParams(std::string generator, const std::map<std::string, std::string>& params)
-    : generator_(std::move(generator)), params_(params) {}
+GeneratorParams::GeneratorParams(std::string generator, const std::map<std::string, std::string>& params,
+                                 bool vertexNormals)
+    : generator_(std::move(generator)), params_(params), vertexNormals_(vertexNormals) {}
 
 void GeneratorParams::fail(const std::string& key, const std::string& what) const {
     throw Error(fmt::format("generator '{}': parameter '{}' {}", generator_, key, what));

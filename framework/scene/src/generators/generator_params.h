@@ -12,7 +12,12 @@ namespace darkroom::generators {
 
 class GeneratorParams {
 public:
-    GeneratorParams(std::string generator, const std::map<std::string, std::string>& params);
+    GeneratorParams(std::string generator, const std::map<std::string, std::string>& params,
+                    bool vertexNormals = false);
+
+    // Whether surfaces that know their exact normals (the isosurface: the
+    // field's gradient) should carry them as vertex normals (vertex_normals.h).
+    bool vertexNormals() const { return vertexNormals_; }
 
     bool has(const std::string& key) const;
     double number(const std::string& key, double fallback, double lo, double hi);
@@ -33,6 +38,7 @@ private:
     std::string generator_;
     const std::map<std::string, std::string>& params_;
     std::set<std::string> known_;
+    bool vertexNormals_ = false;
 };
 
 }  // namespace darkroom::generators

@@ -22,6 +22,7 @@ std::vector<SceneObject> demo(GeneratorParams& p) {
     IsosurfaceOptions iso;
     iso.resolution = p.integer("resolution", iso.resolution, 2, 512);
     iso.isovalue = p.number("isovalue", iso.isovalue, 0.05, 1.2);
+    iso.normals = p.vertexNormals();
     StreamlineOptions lines;
     lines.count = p.integer("streamlines", 40, 0, 100000);
     lines.radius = 0.005;
@@ -56,9 +57,14 @@ std::vector<std::string> generatorNames() {
 }
 
 std::vector<SceneObject> generate(const std::string& name, const std::map<std::string, std::string>& params) {
+    return generate(name, params, GenerateOptions{});
+}
+
+std::vector<SceneObject> generate(const std::string& name, const std::map<std::string, std::string>& params,
+                                  const GenerateOptions& options) {
     for (const auto& [n, builder] : builders()) {
         if (n != name) continue;
-        GeneratorParams p(name, params);
+        GeneratorParams p(name, params, options.vertexNormals);
         return builder(p);
     }
     throw Error(fmt::format("unknown generator '{}' (expected one of: {})", name, fmt::join(generatorNames(), ", ")));

@@ -4,6 +4,7 @@
 #include <darkroom/scene/marching_tetrahedra.h>
 
 #include <darkroom/scene/generators.h>
+#include <darkroom/scene/vertex_normals.h>
 
 #include <tbb/parallel_for.h>
 
@@ -15,6 +16,7 @@ IsosurfaceOptions readIsosurfaceOptions(GeneratorParams& p) {
     // The field peaks at ~1.07 and is < 0.04 on the cube's faces: outside
     // this range the surface would be empty or cut open by the cube.
     o.isovalue = p.number("isovalue", o.isovalue, 0.05, 1.2);
+    o.normals = p.vertexNormals();
     p.finish();
     return o;
 }
@@ -42,6 +44,16 @@ SceneObject buildIsosurface(const IsosurfaceOptions& o) {
         gradient.values[i] = float(length(demoFieldGradient(p)));
     });
     obj.fields = {std::move(height), std::move(value), std::move(gradient)};
+    if (o.normals) {
+        // The exact normal of the level set: the gradient, reversed so that
+        // it points outwards (f falls outwards), as the triangles do.
+        VertexNormals normals(3 * n);
+        tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+            const Vec3 d = normalize(demoFieldGradient(mesh.positions[i])) * -1.0;
+            normals[3 * i] = float(d.x), normals[3 * i + 1] = float(d.y), normals[3 * i + 2] = float(d.z);
+        });
+        setVertexNormals(obj, normals);
+    }
     return obj;
 }
 

@@ -8,7 +8,10 @@
 // ids, so the surface is welded; every point array is interpolated along the
 // edge with the same parameter as the position.
 #include "cell_topology.h"
+#include "volume_gradient.h"
 #include "volume_polymesh.h"
+
+#include <darkroom/scene/vertex_normals.h>
 
 #include <darkroom/error.h>
 
@@ -57,30 +60,53 @@ public:
 
     // Point arrays at the cut vertices, once every surface has been run.
     void interpolateArrays() {
+        for (const auto& a : v_.pointData) out_.pointData.push_back(interpolate(a.name, a.components, a.values));
+    }
+
+    // The volume points interpolate() reads: the ends of the cut edges, and
+    // the corners of a cell whose centroid is an end.
+    std::vector<std::uint8_t> pointsRead() const {
+        std::vector<std::uint8_t> read(np_, 0);
         std::vector<std::uint32_t> ids;
-        for (const auto& a : v_.pointData) {
-            const std::size_t nc = std::size_t(a.components);
-            mesh::DataArray d{a.name, a.components, std::vector<float>(cuts_.size() * nc)};
-            std::vector<double> centroid(nc);
-            for (std::size_t i = 0; i < cuts_.size(); ++i) {
-                const CutVertex& cv = cuts_[i];
-                // Only one end can be a cell's centroid (ids past the points), and only b, or a == b.
-                if (cv.b >= np_) {
-                    const int type = v_.cell(cv.cell, ids);
-                    toLinearCorners(type, ids);
-                    std::fill(centroid.begin(), centroid.end(), 0.0);
-                    for (auto id : ids)
-                        for (std::size_t k = 0; k < nc; ++k) centroid[k] += a.values[std::size_t(id) * nc + k];
-                    for (auto& x : centroid) x /= double(ids.size());
-                }
-                for (std::size_t k = 0; k < nc; ++k) {
-                    const double vb = cv.b >= np_ ? centroid[k] : a.values[std::size_t(cv.b) * nc + k];
-                    const double va = cv.a >= np_ ? centroid[k] : a.values[std::size_t(cv.a) * nc + k];
-                    d.values[i * nc + k] = float(va + double(cv.t) * (vb - va));
-                }
+        for (const CutVertex& cv : cuts_) {
+            if (cv.a < np_) read[cv.a] = 1;
+            if (cv.b < np_) {
+                read[cv.b] = 1;
+                continue;
             }
-            out_.pointData.push_back(std::move(d));
+            const int type = v_.cell(cv.cell, ids);
+            toLinearCorners(type, ids);
+            for (auto id : ids) read[id] = 1;
         }
+        return read;
+    }
+
+    // A point array (`components` values per volume point) at the cut
+    // vertices, with the parameter of each vertex's position along its edge;
+    // at a cell's centroid, the mean of the cell's corners.
+    mesh::DataArray interpolate(const std::string& name, int components, const std::vector<float>& values) const {
+        std::vector<std::uint32_t> ids;
+        const std::size_t nc = std::size_t(components);
+        mesh::DataArray d{name, components, std::vector<float>(cuts_.size() * nc)};
+        std::vector<double> centroid(nc);
+        for (std::size_t i = 0; i < cuts_.size(); ++i) {
+            const CutVertex& cv = cuts_[i];
+            // Only one end can be a cell's centroid (ids past the points), and only b, or a == b.
+            if (cv.b >= np_) {
+                const int type = v_.cell(cv.cell, ids);
+                toLinearCorners(type, ids);
+                std::fill(centroid.begin(), centroid.end(), 0.0);
+                for (auto id : ids)
+                    for (std::size_t k = 0; k < nc; ++k) centroid[k] += values[std::size_t(id) * nc + k];
+                for (auto& x : centroid) x /= double(ids.size());
+            }
+            for (std::size_t k = 0; k < nc; ++k) {
+                const double vb = cv.b >= np_ ? centroid[k] : values[std::size_t(cv.b) * nc + k];
+                const double va = cv.a >= np_ ? centroid[k] : values[std::size_t(cv.a) * nc + k];
+                d.values[i * nc + k] = float(va + double(cv.t) * (vb - va));
+            }
+        }
+        return d;
     }
 
 private:
@@ -190,6 +216,21 @@ private:
     std::vector<CutVertex> cuts_;
 };
 
+// The shading normals of an isosurface: the field's gradient interpolated
+// to each vertex, reversed (the surface's normals point from high to low
+// values), as the point fields N.x, N.y, N.z (vertex_normals.h).
+void gradientNormals(const Contour& contour, const std::vector<float>& gradient, mesh::PolyMesh& out) {
+    const mesh::DataArray g = contour.interpolate("gradient", 3, gradient);
+    const std::size_t n = g.values.size() / 3;
+    std::array<mesh::DataArray, 3> normal;
+    for (int a = 0; a < 3; ++a) normal[std::size_t(a)] = {kVertexNormalFields[a], 1, std::vector<float>(n)};
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 d = normalize(Vec3{g.values[3 * i], g.values[3 * i + 1], g.values[3 * i + 2]}) * -1.0;
+        normal[0].values[i] = float(d.x), normal[1].values[i] = float(d.y), normal[2].values[i] = float(d.z);
+    }
+    for (auto& component : normal) out.pointData.push_back(std::move(component));
+}
+
 }  // namespace
 
 void buildContour(const VolumeMesh& v, const VolumeRepresentation& r, mesh::PolyMesh& out) {
@@ -201,15 +242,17 @@ void buildContour(const VolumeMesh& v, const VolumeRepresentation& r, mesh::Poly
             if (a.name == r.contourBy) f = &a;
         if (!f || f->components != 1) throw Error(v.source + ": internal: contour field missing");
         for (double level : r.isovalues) contour.run(f->values, level, false);
-    } else {
-        std::vector<float> distance(np);
-        for (const SlicePlane& plane : r.planes) {
-            const double len = length(plane.normal);
-            if (!(len > 0)) throw Error(v.source + ": a slice plane's normal must not be zero");
-            const Vec3 n = plane.normal * (1.0 / len);
-            for (std::size_t i = 0; i < np; ++i) distance[i] = float(dot(v.point(i) - plane.origin, n));
-            contour.run(distance, 0.0, true);
-        }
+        contour.interpolateArrays();
+        if (r.gradientNormals) gradientNormals(contour, pointGradient(v, f->values, contour.pointsRead()), out);
+        return;
+    }
+    std::vector<float> distance(np);
+    for (const SlicePlane& plane : r.planes) {
+        const double len = length(plane.normal);
+        if (!(len > 0)) throw Error(v.source + ": a slice plane's normal must not be zero");
+        const Vec3 n = plane.normal * (1.0 / len);
+        for (std::size_t i = 0; i < np; ++i) distance[i] = float(dot(v.point(i) - plane.origin, n));
+        contour.run(distance, 0.0, true);
     }
     contour.interpolateArrays();
 }

@@ -31,6 +31,16 @@ DARKROOM_API std::vector<std::string> generatorNames();
 DARKROOM_API std::vector<SceneObject> generate(const std::string& name,
                                                const std::map<std::string, std::string>& params);
 
+// What a scene asks of generate() beyond the generator's parameters.
+struct GenerateOptions {
+    // Surfaces that know their exact normals carry them as vertex normals
+    // (vertex_normals.h): the isosurface, the demo field's gradient.
+    bool vertexNormals = false;
+};
+DARKROOM_API std::vector<SceneObject> generate(const std::string& name,
+                                               const std::map<std::string, std::string>& params,
+                                               const GenerateOptions& options);
+
 namespace generators {
 
 // The demo's analytic scalar field on [-1,1]^3: a sum of Gaussian blobs (some

@@ -8,6 +8,7 @@
 #include <darkroom/export.h>
 #include <darkroom/scene.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -22,11 +23,33 @@ struct CameraSample {
     Camera camera;
 };
 
+// How the normal channels (N.x, N.y, N.z) are made (`channels: normals`,
+// `featureAngle`; docs/scene-format.md, "Normals").
+struct NormalsOptions {
+    // Smooth: surfaces carry vertex normals (vertex_normals.h) that the
+    // capture interpolates across each triangle: isosurfaces the field's
+    // gradient, meshes whose file has normals those, other meshes the
+    // angle-weighted average of their triangles', split at edges sharper
+    // than featureAngle. Geometric: each triangle's own normal (facets).
+    // Tubes and spheres have their exact normals either way.
+    enum class Style : std::uint8_t { Smooth, Geometric };
+    Style style = Style::Smooth;
+    double featureAngle = 30;  // degrees
+};
+
+// What a caller asks of loading beyond what the file says.
+struct SceneLoadOptions {
+    // Prepare the normal channels even if the file's channels leave them
+    // off (the Capture node's `normals` input), in the file's style.
+    bool normals = false;
+};
+
 struct SceneDescription {
     std::string path;  // the scene file
     std::shared_ptr<Scene> scene;
     std::vector<CameraSample> cameras;
     CaptureRequest request;
+    NormalsOptions normals;  // how request.normals are made
     std::string backend = "embree";
     // Objects marked `store: pointList`: not ray traced; `darkroom capture`
     // writes each as a CSV point list beside every entry (column FILE_<name>)
@@ -40,9 +63,9 @@ struct SceneDescription {
 
 // Parses the scene file and loads every object it names. Throws darkroom::Error
 // naming file:line:column (YAML problems) or the mesh file (reader problems).
-DARKROOM_API SceneDescription loadSceneFile(const std::string& path);
+DARKROOM_API SceneDescription loadSceneFile(const std::string& path, const SceneLoadOptions& options = {});
 DARKROOM_API SceneDescription parseSceneFile(const std::string& yamlText, const std::string& sourceName,
-                                             const std::string& baseDir);
+                                             const std::string& baseDir, const SceneLoadOptions& options = {});
 
 // The Cinema/ParaView orbit: the camera sits at `distance` from `target` in
 // direction cos(theta)(cos(phi) F + sin(phi) R) + sin(theta) U, where U is the

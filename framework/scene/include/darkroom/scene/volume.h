@@ -68,6 +68,10 @@ struct VolumeRepresentation {
     std::string contourBy;           // isosurface: the point field
     std::vector<double> isovalues;   // isosurface: one or more values
     std::vector<SlicePlane> planes;  // slice: one or more planes
+    // Isosurface: give each vertex the field's gradient as its shading
+    // normal (reversed, high to low), as the point fields N.x, N.y, N.z
+    // (vertex_normals.h). Costs a gradient pass over the volume.
+    bool gradientNormals = false;
 };
 
 DARKROOM_API const char* toString(VolumeRepresentation::Kind k);
