@@ -83,6 +83,8 @@ ParamWidget::ParamWidget(const darkroom::PortSpec& port, const QString& baseFold
         if (port.type == T::ColorMap) {
             combo_->setIconSize(QSize(64, 12));
             combo_->setEditable(true);  // a ParaView JSON path is allowed too
+            // Empty: the node picks (ColorMapping: the database's stored map, else viridis).
+            combo_->lineEdit()->setPlaceholderText(tr("automatic"));
         }
         lay->addWidget(combo_, 1);
         connect(combo_, &QComboBox::textActivated, this, [this](const QString& t) { emitText(t); });

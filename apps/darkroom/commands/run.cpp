@@ -169,7 +169,8 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         ->type_name("DIR");
     auto* fe = cmd->add_option("--foreach", a->foreach,
                                "Run once per entry of the Cinema database read by NODE (a CinemaReader); "
-                               "output paths get the entry's parameters, or replace {entry} (sinks fed the "
+                               "output paths get the entry's parameters, or replace {entry} and {column} (e.g. "
+                               "frames/{time}.png; sinks fed the "
                                "reader's row, e.g. CinemaWriter, name entries themselves); sinks that do not "
                                "depend on NODE run once, after the last entry")
                    ->type_name("NODE");

@@ -41,7 +41,7 @@ struct Plan {
     std::vector<std::string> filesOf(std::size_t row) const {
         std::vector<std::string> files;
         for (const auto& out : outputs)
-            files.push_back(resolvedOutput(options, perEntryPath(out.original, db->entryName(row))));
+            files.push_back(resolvedOutput(options, perEntryPath(out.original, *db, row)));
         return files;
     }
 };
@@ -188,7 +188,7 @@ std::string shadeShare(GraphEdits& g, Evaluator& ev, const BatchSettings& s, con
         const std::size_t position = todo[*next], row = p.rows[position];
         const std::string entry = p.db->entryName(row);
         g.set(s.reader, kEntryPort, Value(std::int64_t(row)));
-        for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, entry)));
+        for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, *p.db, row)));
         // Progress between entries counts every process's; during one, this
         // process's own fraction on top.
         const double done = double(kept + queue->finishedEverywhere());

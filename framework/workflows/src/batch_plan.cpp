@@ -3,7 +3,9 @@
 #include "entry_ports.h"
 
 #include <darkroom/atomic_file.h>
+#include <darkroom/error.h>
 #include <darkroom/data/cinema/csv.h>
+#include <darkroom/data/cinema/naming.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -12,17 +14,39 @@ namespace darkroom::workflows::batch {
 
 namespace fs = std::filesystem;
 
-// out.png -> out_phi=30_theta=45.png, or the {entry} placeholder replaced.
-std::string perEntryPath(const std::string& path, const std::string& entry) {
-    std::string out = path;
-    const std::string tag = "{entry}";
-    if (out.find(tag) != std::string::npos) {
-        for (auto pos = out.find(tag); pos != std::string::npos; pos = out.find(tag, pos + entry.size()))
-            out.replace(pos, tag.size(), entry);
-        return out;
+namespace {
+
+// The text a placeholder stands for, safe in a file name: the entry's name,
+// or a cell of its row.
+std::string placeholderValue(const std::string& path, const std::string& name, const CinemaDatabase& db,
+                             std::size_t row, bool startsName) {
+    if (name == "entry") return db.entryName(row);
+    if (const auto column = db.findColumn(name)) return cinemaNamePart(db.cell(row, *column), startsName);
+    std::string columns;
+    for (const auto& c : db.columns()) columns += (columns.empty() ? "" : ", ") + c.name;
+    throw InputError("the output path " + path + " names {" + name + "}, which is neither {entry} nor a column of " +
+                     db.path() + " (its columns: " + columns + ")");
+}
+
+}  // namespace
+
+std::string perEntryPath(const std::string& path, const CinemaDatabase& db, std::size_t row) {
+    std::string out;
+    bool placeholders = false;
+    for (std::size_t i = 0; i < path.size();) {
+        const std::size_t close = path[i] == '{' ? path.find_first_of("{}/", i + 1) : std::string::npos;
+        if (close == std::string::npos || path[close] != '}' || close == i + 1) {
+            out += path[i++];
+            continue;
+        }
+        const bool startsName = out.empty() || out.back() == '/';
+        out += placeholderValue(path, path.substr(i + 1, close - i - 1), db, row, startsName);
+        placeholders = true;
+        i = close + 1;
     }
+    if (placeholders) return out;
     const fs::path p(path);
-    return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
+    return (p.parent_path() / (p.stem().string() + "_" + db.entryName(row) + p.extension().string())).string();
 }
 
 // The output paths (PortType::OutputPath) of the sinks that run per entry,

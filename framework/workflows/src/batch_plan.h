@@ -15,8 +15,12 @@
 
 namespace darkroom::workflows::batch {
 
-// out.png -> out_phi=30_theta=45.png, or the {entry} placeholder replaced.
-std::string perEntryPath(const std::string& path, const std::string& entry);
+// The output path of entry `row`: out.png -> out_phi=30_theta=45.png, or,
+// when the path holds placeholders, {entry} replaced by the entry's name and
+// {column} by the row's cell in that column of the database ("frames/{time}.png"),
+// made safe for file names as entry names are. A placeholder naming no
+// column throws darkroom::InputError naming the path and listing the columns.
+std::string perEntryPath(const std::string& path, const CinemaDatabase& db, std::size_t row);
 
 // A Path input of a per-entry sink, renamed per entry.
 struct OutputPort {

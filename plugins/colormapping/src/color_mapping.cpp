@@ -172,12 +172,9 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
     if (symmetric && logScale) throw Error("a log scale cannot be symmetric about zero; turn off 'symmetric'");
     ScalarRange r;
     if (mode == Range::Database) {
-        if (clip > 0)
-            throw Error("'clip' applies to the automatic range (per image); the database range is every entry's "
-                        "minimum and maximum: set clip to 0, or range to automatic");
         const auto source = in.metadata().attributes.find("source");
         const DatabaseRange d = databaseRange(source == in.metadata().attributes.end() ? "" : source->second, channel,
-                                              logScale, [&ctx](double f) { ctx.progress(0.5 * f); });
+                                              logScale, clip, [&ctx](double f) { ctx.progress(0.5 * f); });
         r.found = d.found, r.low = d.low, r.high = d.high;
         // A database written again (a new capture) changes the range.
         ctx.readsFile((std::filesystem::path(d.database) / "data.csv").string());
@@ -196,6 +193,18 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
     return {r.low, r.high, constant};
 }
 
+std::string ColorMapping::chooseColorMap(Context& ctx, const Buffer& in, const std::string& channel) const {
+    const std::string asked = ctx.get(colormap_);
+    if (!asked.empty()) return asked;
+    // A composable image set names its channel's map in data.csv; CinemaReader
+    // passes it on as metadata (data/cinema/composable.h).
+    const auto& attributes = in.metadata().attributes;
+    const auto stored = attributes.find("colormap." + channel);
+    if (stored == attributes.end() || stored->second.empty()) return "viridis";
+    ctx.readsFile(stored->second);  // an edited map maps again
+    return stored->second;
+}
+
 void ColorMapping::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const std::string channel = chooseChannel(*in, ctx.get(channel_));
@@ -203,10 +212,15 @@ void ColorMapping::execute(Context& ctx) {
     const float* depth = in->hostFloat("Z");
     const int w = in->width(), h = in->height();
 
-    const std::shared_ptr<const Lookup> lookup = lookupFor(ctx.get(colormap_));
+    const std::string colormap = chooseColorMap(ctx, *in, channel);
+    const std::shared_ptr<const Lookup> lookup = lookupFor(colormap);
     const ColorMapData& map = lookup->map;
     const std::vector<Color>& table = lookup->table;
-    const Color nan = ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_);
+    // Without depth, NaN is how ParaView's float images (and TTK's) mark the
+    // background: transparent, as background with depth is.
+    const Color nan = !depth                                  ? Color{0.0f, 0.0f, 0.0f, 0.0f}
+                      : ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor
+                                                                    : ctx.get(nanColor_);
     const float alpha = float(ctx.get(opacity_));
 
     const bool logScale = ctx.get(scale_) == Scale::Log;
@@ -280,7 +294,7 @@ void ColorMapping::execute(Context& ctx) {
     ctx.set(usedMinimum_, low);
     ctx.set(usedMaximum_, high);
     ctx.set(usedScale_, Value(logScale ? "log" : "linear"));
-    ctx.set(usedColormap_, Value(ctx.get(colormap_)));
+    ctx.set(usedColormap_, Value(colormap));
 }
 
 }  // namespace darkroom

@@ -4,8 +4,8 @@
 namespace darkroom {
 
 // Scalar channel -> linear RGBA through a colour map (the paper's
-// ColorMapping pass). Depth Z passes through; background (Z = +inf) becomes
-// transparent.
+// ColorMapping pass). Depth Z passes through; background (Z = +inf, or NaN
+// in an image without Z) becomes transparent.
 class ColorMapping final : public Filter {
 public:
     enum class Range { Automatic, Manual, Database };
@@ -27,6 +27,8 @@ private:
         bool constant = false;
     };
     ChosenRange chooseRange(Context& ctx, const Buffer& in, const std::string& channel) const;
+    // The colour map asked for, else the one stored for the channel, else viridis.
+    std::string chooseColorMap(Context& ctx, const Buffer& in, const std::string& channel) const;
 
     static constexpr double kBig = 1e30;  // no practical limit on data values
 
@@ -34,8 +36,10 @@ private:
     StringIn channel_{"channel", "",
                       "Scalar channel to map (float32 or uint32); empty = the first float32 channel "
                       "other than Z and A"};
-    ColorMapIn colormap_{"colormap", "viridis",
-                         "Preset name or a ParaView colour-map JSON file (relative to the pipeline file)"};
+    ColorMapIn colormap_{"colormap", "",
+                         "Preset name or a ParaView colour-map JSON file (relative to the pipeline file); empty: "
+                         "the map the database stores for the channel (a composable image set's "
+                         "CISChannelColormap), else viridis"};
     EnumIn<Range> range_{"range",
                          {{Range::Automatic, "automatic"}, {Range::Manual, "manual"}, {Range::Database, "database"}},
                          Range::Automatic,
@@ -50,15 +54,17 @@ private:
                       "Widen the automatic or database range to be symmetric about zero, [-m, m] with m the "
                       "larger magnitude (a diverging map's centre at 0)"};
     FloatIn clip_{"clip", 0.0, 0.0, 49.0,
-                  "Percent of values left out at each end of the automatic range (1: the 1st to 99th percentile), "
-                  "so that a few outliers do not take the whole map"};
+                  "Percent of values left out at each end of the automatic or database range (1: the 1st to "
+                  "99th percentile), so that a few outliers do not take the whole map"};
     EnumIn<Scale> scale_{"scale",
                          {{Scale::Linear, "linear"}, {Scale::Log, "log"}},
                          Scale::Linear,
                          "linear: t = (v - min) / (max - min); log: t = (log10 v - log10 min) / (log10 max - log10 min) "
                          "(ParaView's log scale): the automatic range then spans the positive values only, a manual "
                          "range must be positive, and values <= 0 take the start of the map"};
-    ColorIn nanColor_{"nanColor", Color{1.0f, 1.0f, 0.0f, 1.0f}, "Linear colour for NaN values"};
+    ColorIn nanColor_{"nanColor", Color{1.0f, 1.0f, 0.0f, 1.0f},
+                      "Linear colour for NaN values on geometry; in an image without Z, NaN pixels are the "
+                      "background (as in ParaView's float images) and are transparent"};
     BoolIn useMapNanColor_{"useMapNanColor", false,
                            "Use the colour map's own NaN colour when it defines one (ParaView JSON NanColor, "
                            "cool-to-warm, blackbody) instead of nanColor"};

@@ -1,5 +1,7 @@
 #include "database_range.h"
 
+#include "value_histogram.h"
+
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
 #include <darkroom/data/cinema/composable.h>
@@ -141,19 +143,28 @@ void remember(const fs::path& file, std::uint64_t stamp, const std::string& chan
     }
 }
 
-void extend(DatabaseRange& r, const Buffer& b, const std::string& channel, bool positiveOnly) {
+// Calls f(v) for every finite value of `channel` on geometry (positive ones
+// only, for a log scale).
+template <typename F>
+void forEachValue(const Buffer& b, const std::string& channel, bool positiveOnly, F&& f) {
     if (!b.hasChannel(channel)) return;
-    const float* f = b.hostFloat(channel);
-    const std::uint32_t* u = f ? nullptr : b.hostUInt(channel);
+    const float* v = b.hostFloat(channel);
+    const std::uint32_t* u = v ? nullptr : b.hostUInt(channel);
     const float* z = b.hostFloat("Z");
     for (std::size_t i = 0; i < b.pixelCount(); ++i) {
         if (z && std::isinf(z[i]) && z[i] > 0) continue;
-        const double v = f ? double(f[i]) : double(u[i]);
-        if (!std::isfinite(v) || (positiveOnly && !(v > 0))) continue;
+        const double x = v ? double(v[i]) : double(u[i]);
+        if (!std::isfinite(x) || (positiveOnly && !(x > 0))) continue;
+        f(x);
+    }
+}
+
+void extend(DatabaseRange& r, const Buffer& b, const std::string& channel, bool positiveOnly) {
+    forEachValue(b, channel, positiveOnly, [&r](double v) {
         r.low = r.found ? std::min(r.low, v) : v;
         r.high = r.found ? std::max(r.high, v) : v;
         r.found = true;
-    }
+    });
 }
 
 bool fromComposableColumns(const CinemaDatabase& db, const std::string& channel, DatabaseRange& r) {
@@ -182,23 +193,41 @@ struct Remembered {
 std::mutex g_mutex;
 std::map<std::string, Remembered> g_remembered;
 
+using Progress = std::function<void(double)>;
+
+// What is asked: the channel's range, on a log scale, clipped at percentiles.
+struct Request {
+    std::string channel;
+    bool positiveOnly = false;
+    double clip = 0;
+};
+
+// The request as the cache file names it: the channel, and the clip when set.
+std::string cacheKey(const Request& q) {
+    if (q.clip <= 0) return q.channel;
+    std::ostringstream key;
+    key.precision(17);
+    key << q.channel << " clip=" << q.clip;
+    return key.str();
+}
+
 // The range from the CIS columns, the cache file, or a scan (then cached).
-DatabaseRange scanOrLookUp(const std::string& folder, const std::string& channel, bool positiveOnly,
-                           const std::function<void(double)>& progress);
+DatabaseRange scanOrLookUp(const std::string& folder, const Request& q, const Progress& progress);
 
 }  // namespace
 
-DatabaseRange databaseRange(const std::string& source, const std::string& channel, bool positiveOnly,
+DatabaseRange databaseRange(const std::string& source, const std::string& channel, bool positiveOnly, double clip,
                             const std::function<void(double)>& progress) {
     const std::string folder = findDatabase(source);
-    const std::string key = folder + '\n' + channel + (positiveOnly ? "\nlog" : "\nlinear");
+    const Request q{channel, positiveOnly, clip};
+    const std::string key = folder + '\n' + cacheKey(q) + (positiveOnly ? "\nlog" : "\nlinear");
     const std::uint64_t csvStamp = mixStamp(kFnvBasis, (fs::path(folder) / "data.csv").string());
     {
         std::lock_guard<std::mutex> lock(g_mutex);
         const auto it = g_remembered.find(key);
         if (it != g_remembered.end() && it->second.csvStamp == csvStamp) return it->second.range;
     }
-    DatabaseRange r = scanOrLookUp(folder, channel, positiveOnly, progress);
+    DatabaseRange r = scanOrLookUp(folder, q, progress);
     std::lock_guard<std::mutex> lock(g_mutex);
     g_remembered[key] = {csvStamp, r};
     return r;
@@ -206,27 +235,71 @@ DatabaseRange databaseRange(const std::string& source, const std::string& channe
 
 namespace {
 
-DatabaseRange scanOrLookUp(const std::string& folder, const std::string& channel, bool positiveOnly,
-                           const std::function<void(double)>& progress) {
-    DatabaseRange r;
-    r.database = folder;
-    const CinemaDatabase db = CinemaDatabase::open(r.database);
-    if (!positiveOnly && fromComposableColumns(db, channel, r)) {
-        return r;
-    }
-    const std::vector<std::size_t> rows = entryRows(db);
-    const std::uint64_t stamp = stampOf(db, rows);
-    const fs::path cache = cacheFile(db);
-    if (!cache.empty() && cached(cache, stamp, channel, positiveOnly, r)) {
-        return r;
-    }
+// Reads every entry of `rows` in turn, as CinemaReader reads it (a
+// composable set's layers whole), reporting progress from `from` to `to`.
+template <typename F>
+void forEachEntry(const CinemaDatabase& db, const std::vector<std::size_t>& rows, const Progress& progress,
+                  double from, double to, F&& f) {
     const bool composable = isComposableImageSet(db);
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const auto image = composable ? readComposableRows(db, {rows[k]}) : readCinemaProduct(db.productPath(rows[k]));
-        extend(r, *image, channel, positiveOnly);
-        if (progress) progress(double(k + 1) / double(rows.size()));
+        f(*image);
+        if (progress) progress(from + (to - from) * double(k + 1) / double(rows.size()));
     }
-    remember(cache, stamp, channel, positiveOnly, r);
+}
+
+// The clip-th and (100 - clip)-th percentiles of the values in [whole.low,
+// whole.high] (their log10 for a log scale): a histogram, then a finer one
+// inside each bin holding a wanted rank (value_histogram.h). The rank is
+// that of ColorMapping's per-image percentiles: round(q (n - 1)).
+DatabaseRange percentiles(const CinemaDatabase& db, const std::vector<std::size_t>& rows, const Request& q,
+                          const DatabaseRange& whole, const Progress& progress) {
+    using colormapping::ValueHistogram;
+    const auto scaled = [&q](double v) { return q.positiveOnly ? std::log10(v) : v; };
+    ValueHistogram coarse(scaled(whole.low), scaled(whole.high));
+    forEachEntry(db, rows, progress, 0.0, 0.5, [&](const Buffer& b) {
+        forEachValue(b, q.channel, q.positiveOnly, [&](double v) { coarse.add(scaled(v)); });
+    });
+    DatabaseRange r = whole;
+    if (coarse.count() == 0) return r;
+    const auto rankAt = [&](double fraction) {
+        return std::uint64_t(std::llround(fraction * double(coarse.count() - 1)));
+    };
+    const std::uint64_t rankLow = rankAt(q.clip / 100.0), rankHigh = rankAt(1.0 - q.clip / 100.0);
+    const ValueHistogram::Bin binLow = coarse.binOfRank(rankLow), binHigh = coarse.binOfRank(rankHigh);
+    ValueHistogram fineLow(binLow.low, binLow.high), fineHigh(binHigh.low, binHigh.high);
+    forEachEntry(db, rows, progress, 0.5, 1.0, [&](const Buffer& b) {
+        forEachValue(b, q.channel, q.positiveOnly, [&](double v) {
+            const double x = scaled(v);
+            const std::size_t k = coarse.binOf(x);
+            if (k == binLow.index) fineLow.add(x);
+            if (k == binHigh.index) fineHigh.add(x);
+        });
+    });
+    const auto unscaled = [&q](double v) { return q.positiveOnly ? std::pow(10.0, v) : v; };
+    r.low = std::max(whole.low, unscaled(fineLow.binOfRank(rankLow, binLow.below).low));
+    r.high = std::min(whole.high, unscaled(fineHigh.binOfRank(rankHigh, binHigh.below).high));
+    return r;
+}
+
+DatabaseRange scanOrLookUp(const std::string& folder, const Request& q, const Progress& progress) {
+    DatabaseRange r;
+    r.database = folder;
+    const CinemaDatabase db = CinemaDatabase::open(r.database);
+    if (q.clip <= 0 && !q.positiveOnly && fromComposableColumns(db, q.channel, r)) return r;
+    const std::vector<std::size_t> rows = entryRows(db);
+    const std::uint64_t stamp = stampOf(db, rows);
+    const fs::path cache = cacheFile(db);
+    if (!cache.empty() && cached(cache, stamp, cacheKey(q), q.positiveOnly, r)) return r;
+    if (q.clip > 0) {
+        // The minimum and maximum first (cached, or from the composable columns).
+        const DatabaseRange whole = scanOrLookUp(folder, {q.channel, q.positiveOnly, 0.0}, {});
+        r = whole.found ? percentiles(db, rows, q, whole, progress) : whole;
+    } else {
+        forEachEntry(db, rows, progress, 0.0, 1.0,
+                     [&](const Buffer& b) { extend(r, b, q.channel, q.positiveOnly); });
+    }
+    remember(cache, stamp, cacheKey(q), q.positiveOnly, r);
     return r;
 }
 

@@ -40,9 +40,10 @@ void expectColor(const Color& got, const Color& want, float tol, const std::stri
     EXPECT_NEAR(got.a, want.a, tol) << what;
 }
 
-// A ramp from -2 to 6 along x with one NaN pixel.
+// A ramp from -2 to 6 along x with one NaN pixel, all on geometry (finite Z).
 std::shared_ptr<WritableBuffer> ramp() {
-    return test::makeImage(9, 3, {"Pressure"}, [](int x, int y, int) {
+    return test::makeImage(9, 3, {"Z", "Pressure"}, [](int x, int y, int c) {
+        if (c == 0) return 1.0f;
         return x == 4 && y == 1 ? kNaN : -2.0f + float(x);
     });
 }
@@ -53,7 +54,7 @@ TEST(ColorMapping, AutomaticRangeMapsMinimumAndMaximumToTheEnds) {
     const auto r = mapImage(ramp());
     const BufferPtr out = r.outputs.at("image").asImage();
     ASSERT_TRUE(out);
-    EXPECT_EQ(out->channelNames(), (std::vector<std::string>{"R", "G", "B", "A"}));
+    EXPECT_EQ(out->channelNames(), (std::vector<std::string>{"R", "G", "B", "A", "Z"}));
     const auto viridis = loadColorMap("viridis");
     EXPECT_EQ(pixel(*out, 0), viridis.sample(0.0));  // exactly
     EXPECT_EQ(pixel(*out, 8), viridis.sample(1.0));
@@ -87,12 +88,40 @@ TEST(ColorMapping, OnePixelAndConstantImagesUseTheMiddleOfTheMap) {
 }
 
 TEST(ColorMapping, AllNanImageIsAllNanColour) {
-    const auto nan = test::makeImage(3, 2, {"s"}, [](int, int, int) { return kNaN; });
+    const auto nan = test::makeImage(3, 2, {"Z", "s"}, [](int, int, int c) { return c == 0 ? 1.0f : kNaN; });
     const Color grey{0.2f, 0.2f, 0.2f, 0.5f};
     const auto r = mapImage(nan, {{"nanColor", {Value(grey)}}});
     const BufferPtr out = r.outputs.at("image").asImage();
     for (std::size_t i = 0; i < out->pixelCount(); ++i) EXPECT_EQ(pixel(*out, i), grey);
     EXPECT_TRUE(std::isnan(r.outputs.at("usedMinimum").asFloat()));
+}
+
+TEST(ColorMapping, WithoutDepthNanIsTheTransparentBackground) {
+    // ParaView's float images mark the background with NaN and store no depth.
+    const auto img = test::makeImage(3, 1, {"s"}, [](int x, int, int) { return x == 1 ? kNaN : float(x); });
+    const auto r = mapImage(img, {{"nanColor", {Value(Color{1, 1, 0, 1})}}});
+    const BufferPtr out = r.outputs.at("image").asImage();
+    EXPECT_EQ(pixel(*out, 1), (Color{0, 0, 0, 0}));
+    EXPECT_EQ(pixel(*out, 0), loadColorMap("viridis").sample(0.0));
+    EXPECT_EQ(pixel(*out, 2), loadColorMap("viridis").sample(1.0));
+}
+
+TEST(ColorMapping, UsesTheColourMapTheDatabaseStoresUnlessOneIsAsked) {
+    const std::string dir = test::sharedData("cinema/ttk_extracts_001.cdb/colormap");
+    if (dir.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    auto img = ramp();
+    img->metadata().attributes["colormap.Pressure"] = dir + "/blackbody.json";
+    const auto stored = mapImage(img);
+    const auto bb = loadColorMap(dir + "/blackbody.json");
+    EXPECT_EQ(pixel(*stored.outputs.at("image").asImage(), 8), bb.sample(1.0));
+    EXPECT_EQ(stored.outputs.at("usedColormap").asString(), dir + "/blackbody.json");
+    // A map asked for wins; another channel's stored map is not used.
+    const auto asked = mapImage(img, {{"colormap", {Value("magma")}}});
+    EXPECT_EQ(pixel(*asked.outputs.at("image").asImage(), 8), loadColorMap("magma").sample(1.0));
+    img->metadata().attributes.erase("colormap.Pressure");
+    img->metadata().attributes["colormap.Other"] = dir + "/blackbody.json";
+    const auto other = mapImage(img);
+    EXPECT_EQ(other.outputs.at("usedColormap").asString(), "viridis");
 }
 
 TEST(ColorMapping, DepthPassesThroughAndBackgroundIsTransparentAndIgnored) {

@@ -7,6 +7,7 @@
 #include "time_series_database.h"
 
 #include <darkroom/error.h>
+#include <darkroom/data/cinema/writer.h>
 #include <darkroom/core/evaluator.h>
 #include <darkroom/core/graph.h>
 #include <darkroom/core/run_filter.h>
@@ -14,6 +15,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -37,13 +39,14 @@ std::pair<double, double> used(const FilterRunResult& r) {
 }
 
 // The range ColorMapping used for each entry of `db` read by CinemaReader.
-std::vector<std::pair<double, double>> rangesPerEntry(const std::string& db, std::size_t entries) {
+std::vector<std::pair<double, double>> rangesPerEntry(const std::string& db, std::size_t entries, double clip = 0) {
     Graph g(test::pluginRegistry());
     g.addNode("read", "CinemaReader");
     g.addNode("colour", "ColorMapping");
     g.setParameter("read", "database", Value(db));
     g.setParameter("colour", "channel", Value(std::string("value")));
     g.setParameter("colour", "range", Value(std::string("database")));
+    g.setParameter("colour", "clip", Value(clip));
     g.connect({"read", "image"}, {"colour", "image"});
     Evaluator ev;
     std::vector<std::pair<double, double>> out;
@@ -78,6 +81,39 @@ TEST(ColorRange, EveryEntryOfADatabaseSharesOneScaleAndAChangeIsSeen) {
     fs::remove_all(db);
     test::writeTimeSeriesDatabase(db, {1.0, 2.0, 5.0});
     for (const auto& r : rangesPerEntry(db, 3)) EXPECT_EQ(r, std::make_pair(1.0, 5.0));
+}
+
+TEST(ColorRange, TheDatabaseRangeClippedAtPercentilesOfEveryEntrysValues) {
+    CacheHome cache;
+    test::TempDir dir;
+    const std::string db = dir.file("series.cdb");
+    // Four entries of 50 x 20 values spread unevenly, one entry with a far
+    // outlier that a plain minimum and maximum would spread the map over.
+    std::vector<double> all;
+    {
+        CinemaWriter w(db, {"time"});
+        for (int t = 0; t < 4; ++t) {
+            const auto img = test::makeImage(50, 20, {"Z", "value"}, [t](int x, int y, int c) {
+                if (c == 0) return 1.0f;
+                if (t == 2 && x == 0 && y == 0) return 1e7f;
+                return float(std::pow(double(x + 50 * y) / 999.0, 3.0) * (t + 1));
+            });
+            for (std::size_t i = 0; i < img->pixelCount(); ++i) all.push_back(img->hostFloat("value")[i]);
+            w.addEntry({{"time", CinemaValue(double(t))}}, *img);
+        }
+        w.finish();
+    }
+    std::sort(all.begin(), all.end());
+    const auto exact = [&all](double q) { return all[std::size_t(std::llround(q * double(all.size() - 1)))]; };
+    // Two levels of 2^16 bins over [0, 1e7]: within 1e7 / 2^32 of the exact rank.
+    const double tolerance = 1e7 / 4294967296.0 * 2;
+    for (const auto& [low, high] : rangesPerEntry(db, 4, 2.0)) {
+        EXPECT_NEAR(low, exact(0.02), tolerance);
+        EXPECT_NEAR(high, exact(0.98), tolerance);
+        EXPECT_LT(high, 5.0);  // the outlier is out
+    }
+    // Remembered beside the plain range, which it did not replace.
+    for (const auto& r : rangesPerEntry(db, 4)) EXPECT_EQ(r, std::make_pair(all.front(), all.back()));
 }
 
 TEST(ColorRange, AComposableSetsStatedRangeIsUsedWithoutReadingAProduct) {

@@ -90,25 +90,26 @@ std::string quoteCsvCell(std::string_view text) {
 
 std::string CinemaValue::str() const { return isNumber_ ? formatCsvNumber(number_) : text_; }
 
+std::string cinemaNamePart(std::string_view text, bool startsName) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+                        c == '+' || c == '-';
+        // A name starting with '-' reads as an option, with '.' as hidden.
+        const bool leading = startsName && i == 0 && (c == '-' || c == '.');
+        out += ok && !leading ? c : '~';
+    }
+    return out;
+}
+
 std::string cinemaEntryName(const std::vector<std::pair<std::string, std::string>>& parameters) {
-    auto safe = [](std::string_view s, bool first) {
-        std::string out;
-        for (std::size_t i = 0; i < s.size(); ++i) {
-            const char c = s[i];
-            const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                            (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-';
-            // A name starting with '-' reads as an option, with '.' as hidden.
-            const bool leading = first && i == 0 && (c == '-' || c == '.');
-            out += ok && !leading ? c : '~';
-        }
-        return out;
-    };
     std::string name;
     for (std::size_t i = 0; i < parameters.size(); ++i) {
         if (i) name += '_';
-        name += safe(parameters[i].first, i == 0);
+        name += cinemaNamePart(parameters[i].first, i == 0);
         name += '=';
-        name += safe(parameters[i].second, false);
+        name += cinemaNamePart(parameters[i].second, false);
     }
     if (name.empty()) return "entry";
     // File systems stop at 255 bytes; keep a readable prefix and make it

@@ -4,6 +4,7 @@
 #include <darkroom/export.h>
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -17,5 +18,10 @@ namespace darkroom {
 // than 200 bytes are cut and end in "~" and a 16-digit hash of the whole name.
 DARKROOM_API std::string cinemaEntryName(
     const std::vector<std::pair<std::string, std::string>>& parameters);
+
+// One part of such a name (a parameter's name or value) made safe the same
+// way: characters outside [A-Za-z0-9.+-] become '~', and so does a leading
+// '.' or '-' when `startsName` (the part begins a file name).
+DARKROOM_API std::string cinemaNamePart(std::string_view text, bool startsName);
 
 }  // namespace darkroom
