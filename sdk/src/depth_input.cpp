@@ -73,10 +73,9 @@ ImageSpaceView assumeImageSpace(const float* z, int width, int height, DepthWith
     return v;
 }
 
-const float* requireDepth(const Buffer& in) {
-    if (const float* z = in.hostFloat("Z")) return z;
+std::string missingDepthMessage(const Buffer& in) {
     if (const auto type = in.channelType("Z"))
-        throw Error(std::string("expected depth 'Z' as float32 but it is ") + toString(*type));
+        return std::string("expected depth 'Z' as float32 but it is ") + toString(*type);
     const auto& attributes = in.metadata().attributes;
     const auto source = attributes.find("source");
     const std::string channels = channelListText(in);
@@ -84,10 +83,15 @@ const float* requireDepth(const Buffer& in) {
                              "in an EXR or a Darkroom database)";
     if (source != attributes.end()) {
         if (const std::string db = databaseOf(source->second); !db.empty())
-            throw Error("database " + db + " stores no depth (channels: " + channels + ")" + need);
-        throw Error(source->second + " stores no depth (channels: " + channels + ")" + need);
+            return "database " + db + " stores no depth (channels: " + channels + ")" + need;
+        return source->second + " stores no depth (channels: " + channels + ")" + need;
     }
-    throw Error("the image has no depth channel 'Z' (channels: " + channels + ")" + need);
+    return "the image has no depth channel 'Z' (channels: " + channels + ")" + need;
+}
+
+const float* requireDepth(const Buffer& in) {
+    if (const float* z = in.hostFloat("Z")) return z;
+    throw Error(missingDepthMessage(in));
 }
 
 Camera cameraOrImageSpace(const Buffer& in, const float* z, DepthWithoutCamera mode, std::string* assumption) {

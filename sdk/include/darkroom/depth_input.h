@@ -58,6 +58,9 @@ DARKROOM_API ImageSpaceView assumeImageSpace(const float* z, int width, int heig
 // throws darkroom::Error saying which database or file stores no depth
 // (from the buffer's "source" attribute) and listing the channels it has.
 DARKROOM_API const float* requireDepth(const Buffer& in);
+// requireDepth's message for a buffer without a float32 `Z` (the host says
+// the same when an image port that needs `Z` gets none).
+DARKROOM_API std::string missingDepthMessage(const Buffer& in);
 
 // The camera of a buffer with the buffer's resolution when it has one;
 // otherwise the image-space camera for its depth `z`, and `assumption` (if not
