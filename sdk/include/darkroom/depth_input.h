@@ -43,7 +43,7 @@ struct ImageSpaceView {
     bool decidedByValues = false;  // Automatic chose `normalised` from the values
     double zMin = 0, zMax = 0;     // finite Z of the image (0, 0 when none)
     // What was assumed, in the words of the pass's warning.
-    std::string describe() const;
+    DARKROOM_API std::string describe() const;
 };
 
 // The orthographic camera described above, for a width x height image whose
