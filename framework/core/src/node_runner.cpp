@@ -6,6 +6,7 @@
 #include <darkroom/core/graph.h>
 
 #include <darkroom/colormap.h>
+#include <darkroom/depth_input.h>
 #include <darkroom/error.h>
 #include <darkroom/limits.h>
 #include <darkroom/channel_text.h>
@@ -120,7 +121,9 @@ std::map<std::string, std::vector<Value>> checkedInputs(const NodeCall& call, co
                 const BufferPtr& b = x.asImage();
                 if (!b) throw Error(label + ": input '" + in->name + "' received no image", call.name);
                 for (const auto& c : in->channels)
-                    if (!b->hasChannel(c))
+                    if (c == "Z" && !b->hasChannel(c))  // name the database that stores no depth
+                        throw Error(label + ": input '" + in->name + "': " + missingDepthMessage(*b), call.name);
+                    else if (!b->hasChannel(c))
                         throw Error(label + ": input '" + in->name + "' needs channel '" + c + "', but the image has " +
                                     channelListText(*b), call.name);
             } else {

@@ -1,5 +1,6 @@
 #include <darkroom/workflows/batch.h>
 
+#include "batch_entries.h"
 #include "batch_plan.h"
 #include "entry_ports.h"
 
@@ -25,7 +26,11 @@ namespace {
 struct Plan {
     fs::path source;  // the database read
     std::optional<CinemaDatabase> db;
-    std::vector<std::size_t> rows;  // the selected rows, in database order
+    std::vector<std::size_t> rows;  // the selected entries' rows, in database order (batch_entries.h)
+    // Each entry's file-name-safe name, for the output paths renamed per
+    // entry. A database sink (CinemaWriter) names its entries from the row
+    // it is fed, so its files go by CinemaDatabase::entryName.
+    std::map<std::size_t, std::string> names;
     std::vector<std::string> entrySinks, finalSinks;
     std::vector<OutputPort> outputs;
     std::vector<DatabaseSink> databases;
@@ -37,11 +42,13 @@ struct Plan {
     bool staging = false;  // several processes write databases: each into its staging database
     EvaluatorOptions options;
 
+    const std::string& entryName(std::size_t row) const { return names.at(row); }
+
     // The files entry `row` writes through the renamed output paths.
     std::vector<std::string> filesOf(std::size_t row) const {
         std::vector<std::string> files;
         for (const auto& out : outputs)
-            files.push_back(resolvedOutput(options, perEntryPath(out.original, *db, row)));
+            files.push_back(resolvedOutput(options, perEntryPath(out.original, entryName(row), *db, row)));
         return files;
     }
 };
@@ -78,11 +85,19 @@ void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
     } catch (const Error& e) {
         throw InputError("node '" + s.reader + "' (" + reader->type + "): " + e.what());
     }
+    std::vector<std::size_t> selected;
     if (s.where.empty())
-        for (std::size_t r = 0; r < p.db->rowCount(); ++r) p.rows.push_back(r);
+        for (std::size_t r = 0; r < p.db->rowCount(); ++r) selected.push_back(r);
     else
-        p.rows = p.db->selectWhere(s.where);
-    if (p.rows.empty()) throw InputError(p.source.string() + ": no entry matches '" + s.where + "'");
+        selected = p.db->selectWhere(s.where);
+    if (selected.empty()) throw InputError(p.source.string() + ": no entry matches '" + s.where + "'");
+    try {
+        BatchEntries entries = batchEntries(*p.db, selected);
+        p.rows = std::move(entries.rows);
+        p.names = std::move(entries.names);
+    } catch (const Error& e) {
+        throw InputError("node '" + s.reader + "' (" + reader->type + "): " + e.what());
+    }
 }
 
 // What reads a per-entry sink's output: only a sink run after the last entry,
@@ -186,9 +201,9 @@ std::string shadeShare(GraphEdits& g, Evaluator& ev, const BatchSettings& s, con
     std::string records;
     while (const auto next = queue->next()) {
         const std::size_t position = todo[*next], row = p.rows[position];
-        const std::string entry = p.db->entryName(row);
+        const std::string entry = p.entryName(row);
         g.set(s.reader, kEntryPort, Value(std::int64_t(row)));
-        for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, *p.db, row)));
+        for (const auto& out : p.outputs) g.set(out.node, out.port, Value(perEntryPath(out.original, entry, *p.db, row)));
         // Progress between entries counts every process's; during one, this
         // process's own fraction on top.
         const double done = double(kept + queue->finishedEverywhere());

@@ -18,9 +18,9 @@ namespace {
 
 // The text a placeholder stands for, safe in a file name: the entry's name,
 // or a cell of its row.
-std::string placeholderValue(const std::string& path, const std::string& name, const CinemaDatabase& db,
-                             std::size_t row, bool startsName) {
-    if (name == "entry") return db.entryName(row);
+std::string placeholderValue(const std::string& path, const std::string& name, const std::string& entry,
+                             const CinemaDatabase& db, std::size_t row, bool startsName) {
+    if (name == "entry") return entry;
     if (const auto column = db.findColumn(name)) return cinemaNamePart(db.cell(row, *column), startsName);
     std::string columns;
     for (const auto& c : db.columns()) columns += (columns.empty() ? "" : ", ") + c.name;
@@ -30,7 +30,8 @@ std::string placeholderValue(const std::string& path, const std::string& name, c
 
 }  // namespace
 
-std::string perEntryPath(const std::string& path, const CinemaDatabase& db, std::size_t row) {
+std::string perEntryPath(const std::string& path, const std::string& entry, const CinemaDatabase& db,
+                         std::size_t row) {
     std::string out;
     bool placeholders = false;
     for (std::size_t i = 0; i < path.size();) {
@@ -40,13 +41,13 @@ std::string perEntryPath(const std::string& path, const CinemaDatabase& db, std:
             continue;
         }
         const bool startsName = out.empty() || out.back() == '/';
-        out += placeholderValue(path, path.substr(i + 1, close - i - 1), db, row, startsName);
+        out += placeholderValue(path, path.substr(i + 1, close - i - 1), entry, db, row, startsName);
         placeholders = true;
         i = close + 1;
     }
     if (placeholders) return out;
     const fs::path p(path);
-    return (p.parent_path() / (p.stem().string() + "_" + db.entryName(row) + p.extension().string())).string();
+    return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
 }
 
 // The output paths (PortType::OutputPath) of the sinks that run per entry,

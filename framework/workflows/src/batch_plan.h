@@ -15,12 +15,14 @@
 
 namespace darkroom::workflows::batch {
 
-// The output path of entry `row`: out.png -> out_phi=30_theta=45.png, or,
-// when the path holds placeholders, {entry} replaced by the entry's name and
+// The output path of entry `row`, named `entry` (batch_entries.h):
+// out.png -> out_phi=30_theta=45.png, or, when the path holds placeholders,
+// {entry} replaced by that name and
 // {column} by the row's cell in that column of the database ("frames/{time}.png"),
 // made safe for file names as entry names are. A placeholder naming no
 // column throws darkroom::InputError naming the path and listing the columns.
-std::string perEntryPath(const std::string& path, const CinemaDatabase& db, std::size_t row);
+std::string perEntryPath(const std::string& path, const std::string& entry, const CinemaDatabase& db,
+                         std::size_t row);
 
 // A Path input of a per-entry sink, renamed per entry.
 struct OutputPort {

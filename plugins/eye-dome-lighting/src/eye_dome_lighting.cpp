@@ -1,5 +1,6 @@
 #include "eye_dome_lighting.h"
 
+#include <darkroom/depth_input.h>
 #include <darkroom/error.h>
 #include <darkroom/view_geometry.h>
 
@@ -34,7 +35,7 @@ void EyeDomeLighting::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const int w = in->width(), h = in->height();
     const std::size_t n = in->pixelCount();
-    const float* z = in->requireFloat("Z");
+    const float* z = requireDepth(*in);  // no camera needed: EDL works on log depth
     const double strength = ctx.get(strength_), radius = ctx.get(radius_);
     const int scales = int(ctx.get(scales_));
 

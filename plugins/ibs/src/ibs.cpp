@@ -14,7 +14,7 @@ namespace darkroom {
 
 void Ibs::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
-    const float* depth = in->requireFloat("Z");
+    const float* depth = requireDepth(*in);
     const int w = in->width(), h = in->height();
 
     passes::SilhouetteOptions so;
@@ -56,7 +56,7 @@ void Ibs::execute(Context& ctx) {
         job.outAlpha = alphaIn ? out->writeFloat("A") : nullptr;
         std::unique_ptr<float[]> reconstructed[3];
         if (lighting) {
-            const Camera camera = requireCamera(*in, "input 'image' (for lighting)");
+            const Camera camera = camera_.get(ctx, *in, depth);
             job.setView(camera);
             const float* world[3] = {in->hostFloat("N.x"), in->hostFloat("N.y"), in->hostFloat("N.z")};
             if (world[0] && world[1] && world[2]) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
 namespace darkroom {
@@ -11,9 +12,10 @@ public:
 
     PortList ports() const override {
         return {image_, width_, strength_, color_, depthThreshold_, side_, objectIds_, lighting_, luminance_,
-                ambient_, result_};
+                ambient_, camera_.port(), result_};
     }
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo&) override { camera_.beginSequence(); }
 
 private:
     ImageIn image_{"image",
@@ -38,6 +40,7 @@ private:
                      "(N from N.* or reconstructed from depth)"};
     FloatIn luminance_{"luminance", 1.0, 0.0, 100.0, "Light intensity of the lighting term"};
     FloatIn ambient_{"ambient", 0.2, 0.0, 1.0, "Share of the light that does not depend on the normal"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image",
                      "All input channels plus Silhouette in [0, 1]; R, G, B (and A) with the outlines "
                      "(and lighting) applied when the input has colour",

@@ -148,9 +148,10 @@ TEST(Ibs, HeadlightLightingMatchesTheAnalyticCosine) {
     for (std::size_t i = 0; i < out2->pixelCount(); ++i) EXPECT_NEAR(out2->hostFloat("B")[i], want, 1e-5) << i;
 }
 
-TEST(Ibs, LightingWithoutCameraIsAnError) {
+// Without a camera, lighting uses the image-space camera (docs/cameras.md).
+TEST(Ibs, LightingWithoutCameraUsesTheImageSpaceCamera) {
     auto img = makeImage(4, 4, {"Z", "R", "G", "B"}, [](int, int, int) { return 3.0f; });
-    EXPECT_THROW(runPass("IBS", img, {{"lighting", {Value(true)}}}), Error);
+    EXPECT_NO_THROW(runPass("IBS", img, {{"lighting", {Value(true)}}}));
     EXPECT_NO_THROW(runPass("IBS", img)) << "silhouettes alone need no camera";
 }
 

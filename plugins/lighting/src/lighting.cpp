@@ -28,9 +28,9 @@ void Lighting::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const int w = in->width(), h = in->height();
     const std::size_t n = in->pixelCount();
-    const Camera camera = requireCamera(*in, "input 'image'");
+    const float* z = requireDepth(*in);
+    const Camera camera = camera_.get(ctx, *in, z);
     const ViewGeometry vg(camera, w, h);
-    const float* z = in->requireFloat("Z");
     const float* albedo[3] = {in->requireFloat("R"), in->requireFloat("G"), in->requireFloat("B")};
 
     // Normals in SDK view space, facing the camera (two-sided lighting).

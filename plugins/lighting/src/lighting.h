@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
 namespace darkroom {
@@ -15,9 +16,10 @@ public:
     PortList ports() const override {
         return {image_,     geometry_,   ao_,         normals_,    mode_,       space_,      lightCount_,
                 direction1_, intensity1_, direction2_, intensity2_, direction3_, intensity3_, direction4_,
-                intensity4_, ambient_,    diffuse_,    specular_,   shininess_,  specularColor_, result_};
+                intensity4_, ambient_,    diffuse_,    specular_,   shininess_,  specularColor_, camera_.port(), result_};
     }
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo&) override { camera_.beginSequence(); }
 
 private:
     ImageIn image_{"image",
@@ -65,6 +67,7 @@ private:
                       "Blinn-Phong term: specular * intensity * max(0, N.H)^shininess, where N.L > 0"};
     FloatIn shininess_{"shininess", 32.0, 1.0, 10000.0, "Blinn-Phong exponent (larger = smaller highlights)"};
     ColorIn specularColor_{"specularColor", Color{1.0f, 1.0f, 1.0f, 1.0f}, "Linear colour of the highlights"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image",
                      "R, G, B lit where Z is finite: albedo (ambient AO + diffuse sum I max(0, N.L)) + specular "
                      "colour sum I max(0, N.H)^shininess; background and other channels unchanged",

@@ -4,8 +4,8 @@ namespace darkroom {
 
 void Normals::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
-    const float* depth = in->requireFloat("Z");
-    const Camera camera = requireCamera(*in, "input 'image'");
+    const float* depth = requireDepth(*in);
+    const Camera camera = camera_.get(ctx, *in, depth);
     const bool captured = in->hostFloat("N.x") && in->hostFloat("N.y") && in->hostFloat("N.z");
     const bool keep = captured && !ctx.get(replace_);
 

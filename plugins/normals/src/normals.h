@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 #include <darkroom/view_geometry.h>
 
@@ -8,8 +9,9 @@ namespace darkroom {
 // Z and the camera carried by the image.
 class Normals final : public Filter {
 public:
-    PortList ports() const override { return {image_, method_, replace_, result_}; }
+    PortList ports() const override { return {image_, method_, replace_, camera_.port(), result_}; }
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo&) override { camera_.beginSequence(); }
 
 private:
     ImageIn image_{"image", "Depth Z (planar view depth, +inf background) with its camera in the metadata", {"Z"}};
@@ -23,6 +25,7 @@ private:
     BoolIn replace_{"replace", false,
                     "When the input already has N.x/N.y/N.z (e.g. captured normals), overwrite them with "
                     "the reconstruction; when false they are kept and Nv is derived from them"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image",
                      "All input channels plus world normals N.x/N.y/N.z, view-space normals Nv.x/Nv.y/Nv.z "
                      "(x right, y up, z towards the viewer) and world positions P.x/P.y/P.z; NaN on "

@@ -123,15 +123,13 @@ TEST(Normals, UInt32ChannelsPassThrough) {
     for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(out->hostUInt("objectId")[i], i * 7);
 }
 
-TEST(Normals, MissingCameraIsAnErrorNamingTheInput) {
+// Without a camera a plane of constant depth is shaded in image space
+// (docs/cameras.md): it faces the viewer.
+TEST(Normals, WithoutCameraAFlatImageFacesTheViewer) {
     auto img = makeImage(4, 4, {"Z"}, [](int, int, int) { return 3.0f; });
-    try {
-        runPass("Normals", img);
-        FAIL() << "expected an error";
-    } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("input 'image'"));
-        EXPECT_THAT(e.what(), HasSubstr("camera"));
-    }
+    const BufferPtr out = runPass("Normals", img);
+    const float* nz = out->requireFloat("Nv.z");
+    for (std::size_t i = 0; i < out->pixelCount(); ++i) EXPECT_NEAR(nz[i], 1.0f, 1e-6f) << i;
 }
 
 TEST(Normals, MissingDepthIsAnError) {

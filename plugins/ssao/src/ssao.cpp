@@ -6,6 +6,7 @@
 #include "frame.h"
 #include "half_resolution.h"
 
+#include <darkroom/depth_input.h>
 #include <darkroom/error.h>
 
 #include <algorithm>
@@ -17,15 +18,17 @@
 namespace darkroom {
 
 PortList Ssao::ports() const {
-    return {image_,     method_, geometry_,  radius_, radiusUnits_, samples_, slices_, steps_,    falloff_,
-            bias_,      thickness_, intensity_, power_, seed_,      blurRadius_, resolution_, useNormals_, result_};
+    return {image_,     method_, geometry_,  radius_, radiusUnits_, samples_,    slices_,    steps_,
+            falloff_,   bias_,   thickness_, intensity_, power_,  seed_,       blurRadius_, resolution_,
+            useNormals_, camera_.port(), result_};
 }
+
+void Ssao::beginSequence(const SequenceInfo&) { camera_.beginSequence(); }
 
 void Ssao::execute(Context& ctx) {
     using namespace ssao;
     const BufferPtr in = ctx.get(image_);
-    if (in->channelType("Z") != ChannelType::Float32) throw Error("the image needs a float32 depth channel 'Z'");
-    const Camera camera = requireCamera(*in, "the image");
+    const Camera camera = camera_.get(ctx, *in, requireDepth(*in));
     if (camera.projection == Camera::Projection::Perspective
             ? !(camera.fovYDegrees > 0 && camera.fovYDegrees < 180)
             : !(camera.viewHeight > 0))

@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
 namespace darkroom {
@@ -14,9 +15,10 @@ public:
 
     PortList ports() const override;
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo& info) override;
 
 private:
-    ImageIn image_{"image", "G-buffer with planar depth Z (+inf = background) and a camera in its metadata", {"Z"}};
+    ImageIn image_{"image", "G-buffer with planar depth Z (+inf = background) and, best, a camera in its metadata (without one it is shaded in image space)", {"Z"}};
     EnumIn<Method> method_{"method",
                            {{Method::Hemisphere, "hemisphere"}, {Method::Horizon, "horizon"}},
                            Method::Horizon,
@@ -60,6 +62,7 @@ private:
     BoolIn useNormals_{"useNormals", false,
                        "Use the input's world-space normals N.x/N.y/N.z when present instead of "
                        "reconstructing them from Z"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image", "The input channels plus AO in [0, 1] (1 = unoccluded; 1 on background)", {"AO"}};
 };
 

@@ -12,8 +12,8 @@ namespace darkroom {
 
 void Ssdd::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
-    const float* depth = in->requireFloat("Z");
-    const Camera camera = requireCamera(*in, "input 'image'");
+    const float* depth = requireDepth(*in);
+    const Camera camera = camera_.get(ctx, *in, depth);
     const int w = in->width(), h = in->height();
     const double strength = ctx.get(strength_);
     double sigma = ctx.get(sigma_);

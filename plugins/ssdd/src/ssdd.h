@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
 namespace darkroom {
@@ -10,8 +11,9 @@ class Ssdd final : public Filter {
 public:
     enum class SigmaUnits { ImageHeight, Pixels };
 
-    PortList ports() const override { return {image_, strength_, sigma_, sigmaUnits_, apply_, result_}; }
+    PortList ports() const override { return {image_, strength_, sigma_, sigmaUnits_, apply_, camera_.port(), result_}; }
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo&) override { camera_.beginSequence(); }
 
 private:
     ImageIn image_{"image", "Depth Z (planar view depth, +inf background) with its camera in the metadata", {"Z"}};
@@ -26,6 +28,7 @@ private:
                                    "imageHeight: sigma is a fraction of the image height (same look at any "
                                    "resolution); pixels: sigma in pixels"};
     BoolIn apply_{"apply", false, "Also multiply R, G, B (when present) by the factor; otherwise only add SSDD"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image",
                      "All input channels plus SSDD, a darkening factor in [0, 1] (1 = unchanged; 1 on "
                      "background and where Z is not finite)",

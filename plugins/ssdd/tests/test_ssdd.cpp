@@ -133,9 +133,12 @@ TEST(Ssdd, StressInputsStayFiniteAndInRange) {
         EXPECT_EQ(runPass("SSDD", holes, pixels(0.0))->hostFloat("SSDD")[i], 1.0f);
 }
 
-TEST(Ssdd, MissingCameraIsAnErrorNamingTheInput) {
+// Without a camera: image space (docs/cameras.md); flat depth, no darkening.
+TEST(Ssdd, WithoutCameraFlatDepthIsNotDarkened) {
     auto img = makeImage(4, 4, {"Z"}, [](int, int, int) { return 3.0f; });
-    EXPECT_THAT([&] { runPass("SSDD", img); }, ::testing::ThrowsMessage<Error>(::testing::HasSubstr("input 'image'")));
+    const BufferPtr out = runPass("SSDD", img);
+    const float* f = out->requireFloat("SSDD");
+    for (std::size_t i = 0; i < out->pixelCount(); ++i) EXPECT_NEAR(f[i], 1.0f, 1e-6f) << i;
 }
 
 TEST(Ssdd, ResultDoesNotDependOnTheThreadCount) {

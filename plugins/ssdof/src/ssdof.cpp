@@ -23,8 +23,8 @@ void Ssdof::execute(Context& ctx) {
     const float* G = in->requireFloat("G");
     const float* B = in->requireFloat("B");
     const float* A = in->hostFloat("A");
-    const float* Z = in->requireFloat("Z");
-    const Camera camera = requireCamera(*in, "the image (the circle of confusion needs its field of view)");
+    const float* Z = requireDepth(*in);
+    const Camera camera = camera_.get(ctx, *in, Z);
 
     const double aperture = ctx.get(aperture_);
     double focal = ctx.get(focalDistance_);

@@ -1,4 +1,5 @@
 #pragma once
+#include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
 namespace darkroom {
@@ -9,9 +10,10 @@ public:
     enum class Method { Disc, Hexagon };
 
     PortList ports() const override {
-        return {image_, focalDistance_, aperture_, maxBlur_, method_, samples_, rotation_, result_};
+        return {image_, focalDistance_, aperture_, maxBlur_, method_, samples_, rotation_, camera_.port(), result_};
     }
     void execute(Context& ctx) override;
+    void beginSequence(const SequenceInfo&) override { camera_.beginSequence(); }
 
 private:
     static constexpr double kBig = 1e30;
@@ -37,6 +39,7 @@ private:
     FloatIn rotation_{"rotation", 0.0, 0.0, 60.0,
                       "Hexagon orientation: a corner points this many degrees clockwise from up (hexagon "
                       "method)"};
+    CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
     ImageOut result_{"image",
                      "Input channels passed through with R, G, B (and A if present) blurred; in-focus "
                      "pixels without near-field bleeding are bit-identical",

@@ -207,7 +207,7 @@ TEST(Evaluator, MissingChannelIsReportedWithWhatExists) {
         ev.evaluate(g, "z", "image");
         FAIL();
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("needs channel 'Z', but the image has value"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("input 'image': the image has no depth channel 'Z' (channels: value)"), std::string::npos)
             << e.what();
     }
 }

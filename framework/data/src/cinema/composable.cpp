@@ -197,7 +197,6 @@ std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db, co
     attrs["cis.layer"] = layer.id;
     attrs["cis.origin"] = image.originStated ? image.origin : image.origin + " (assumed: no CISOrigin in data.csv)";
     for (const auto& ch : layer.channels) {
-        const std::string path = db.productPath(ch.row);
         // Layer-sized, stored [x][y]; the conversions below do not depend on the layout.
         std::vector<float> values = cis::readChannelValues(db, image, layer, ch, warnings);
         const float background = ch.isDepth ? kInf : kNaN;
@@ -226,16 +225,10 @@ std::shared_ptr<WritableBuffer> readComposableLayer(const CinemaDatabase& db, co
                                              "1.0 background -> +inf",
                                              nearValue, farValue);
                 } else {
+                    // Recorded, not warned: compositing is right on normalised
+                    // depth, and a depth-based pass reads it as normalised in
+                    // image space and says so once per run (sdk depth_input.h).
                     convention = "TTK normalised depth kept in [0,1) (no camera near/far); 1.0 background -> +inf";
-                    if (warnings)
-                        warnings->push_back(
-                            {Diagnostic::Severity::Warning, path,
-                             fmt::format("depth of layer {} is TTK's normalised [0,1] depth and {} records no camera "
-                                         "near/far: Z keeps the normalised values (ordering preserved, so "
-                                         "compositing is correct; not world units) and the 1.0 background "
-                                         "becomes +inf",
-                                         layer.id, db.csvPath()),
-                             {}});
                 }
             } else {
                 convention = "raw distance kept as is";

@@ -70,7 +70,8 @@ DARKROOM_API std::vector<CisImage> composableImages(const CinemaDatabase& db,
 //   camera's near/far known (columns CamNear/CamFar or CamNearFar_0/_1)
 //   Z = near + d (far - near), planar world depth; without them the
 //   normalised values are kept (their ordering still composites correctly)
-//   and ONE warning says so.
+//   and "depth.convention" says so (no warning: the depth-based passes read
+//   such Z in image space and say what they assume, see depth_input.h).
 // - Ascent (NaN background): NaN -> +inf, distances kept.
 // Metadata attributes: "colormap.<var>" = colour-map JSON path,
 // "cis.image", "cis.layer", "cis.origin" (with "(assumed)" when data.csv does
