@@ -522,14 +522,22 @@ namespace {
 
 // The product of one entry: an image file by its extension, or pycinema's
 // .h5 with the entry's parameters in its meta group, as pycinema's writer
-// keeps them there (docs/formats.md).
+// keeps them there (docs/formats.md): numbers as numbers.
 void writeProduct(const Buffer& image, const std::string& path, const CinemaParameters& parameters,
                   const CinemaWriterOptions& options) {
     if (options.productExtension != ".h5") return writeImage(image, path, options.image);
     h5::MetaValues meta;
-    for (const auto& [column, value] : parameters)
-        meta[column] = value.isNumber() ? h5::MetaValues::mapped_type(value.number())
-                                        : h5::MetaValues::mapped_type(value.text());
+    for (const auto& [column, value] : parameters) {
+        // A cell copied as text from another database ("2.0") that reads as
+        // a number in data.csv is a number to pycinema too.
+        double number = 0;
+        if (value.isNumber())
+            meta[column] = value.number();
+        else if (parseCsvNumber(value.text(), number))
+            meta[column] = number;
+        else
+            meta[column] = value.text();
+    }
     h5::writeImageFile(image, path, meta);
 }
 
