@@ -9,6 +9,8 @@
 if(TARGET darkroom_hdf5)
   return()
 endif()
+# FindHDF5's C component test-compiles a C file: the fuzz project is C++ only.
+enable_language(C)
 find_package(HDF5 QUIET COMPONENTS C)
 if(NOT HDF5_FOUND OR NOT HDF5_C_INCLUDE_DIRS)
   # (No semicolons in the text: CMake would read them as list separators.)
