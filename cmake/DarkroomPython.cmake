@@ -42,6 +42,12 @@ if(DARKROOM_WITH_PYTHON)
     if(_no_pytest)
       list(APPEND _python_missing "python3-pytest")
     endif()
+    # h5py writes and reads the .h5 databases of the pycinema tests (python/tests/test_pycinema_h5.py).
+    execute_process(COMMAND ${Python3_EXECUTABLE} -c "import h5py" RESULT_VARIABLE _no_h5py
+                    OUTPUT_QUIET ERROR_QUIET)
+    if(_no_h5py)
+      list(APPEND _python_missing "python3-h5py")
+    endif()
   endif()
   if(_python_missing)
     list(JOIN _python_missing " " _packages)

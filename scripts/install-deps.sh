@@ -12,6 +12,8 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
+  # pycinema's and ParaView's .h5 Cinema products (docs/formats.md)
+  libhdf5-dev
   # text of ColorLegend and Annotation (pango, cairo; font: fonts-dejavu-core
   # below), and the Movie node's H.264 encoding (FFmpeg's libraries, libx264)
   libpango1.0-dev libcairo2-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
@@ -29,6 +31,8 @@ packages=(
   # the Python module (python/, docs/python.md): pybind11, NumPy, pytest for
   # its tests, nbclient and ipykernel to run the example notebook
   pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-ipykernel
+  # h5py: the tests that write and read .h5 databases the way pycinema does
+  python3-h5py
   # meshio: the example that captures a mesh of a format Darkroom has no reader for
   python3-meshio
   # SIMD kernels (plugins/ssao)

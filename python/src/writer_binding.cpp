@@ -25,8 +25,9 @@ public:
     PyWriter(const std::filesystem::path& path, const std::vector<std::string>& columns, const std::string& format,
              const std::string& mode) {
         CinemaWriterOptions o;
-        if (format != "exr" && format != "png")
-            throw py::value_error("format: expected 'exr' (every channel) or 'png' (colour), got '" + format + "'");
+        if (format != "exr" && format != "png" && format != "h5")
+            throw py::value_error("format: expected 'exr' (every channel), 'png' (colour) or 'h5' (pycinema's HDF5), "
+                                  "got '" + format + "'");
         o.productExtension = "." + format;
         if (mode == "overwrite") o.overwrite = true;
         else if (mode == "resume") o.resume = true;

@@ -1,7 +1,8 @@
-// Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI with the
+// Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI, H5 with the
 // project's own writers; binary STL byte by byte), so that no binary file is committed:
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
+#include "formats/h5_image.h"
 #include "io/exr_file.h"
 #include "../../framework/data/oiio/module.h"
 
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl"}) fs::create_directories(root / d);
+    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl", "h5"}) fs::create_directories(root / d);
     try {
         // EXR: float RGBA with a camera-free G-buffer channel, each compression.
         const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
@@ -127,6 +128,13 @@ int main(int argc, char** argv) {
         writeVti((root / "vti" / "raw.vti").string(), *vtiImage, camera);
         writeVti((root / "vti" / "base64.vti").string(), *vtiImage, camera, {.base64 = true});
         writeVti((root / "vti" / "zlib.vti").string(), *vtiImage, std::nullopt, {.base64 = true, .zlib = true});
+        // pycinema's .h5: depth, a scalar, colour and ids with a camera and a row in meta.
+        auto h5Image = image(3, 2, {"Z", "Scalar", "R", "G", "B"});
+        Camera h5Camera;
+        h5Camera.width = 3;
+        h5Camera.height = 2;
+        h5Image->metadata().camera = h5Camera;
+        writeBytes(root / "h5" / "image.h5", h5::encodeImage(*h5Image, {{"time", 0.5}, {"label", std::string("a")}}));
         // Binary STL: one triangle (134 bytes), and two sharing an edge under
         // a header that starts with "solid" as CAD tools write it.
         writeBytes(root / "stl" / "one-triangle.stl", binaryStl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}}));

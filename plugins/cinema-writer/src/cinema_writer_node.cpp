@@ -40,7 +40,7 @@ CinemaWriterOptions writerOptions(const CinemaWriterNode::Settings& s, bool agai
     // existing, not replaced.
     o.overwrite = s.mode == Mode::Overwrite && !again;
     o.resume = s.mode == Mode::Resume || again;
-    o.productExtension = s.format == Format::Png ? ".png" : ".exr";
+    o.productExtension = s.format == Format::Png ? ".png" : s.format == Format::H5 ? ".h5" : ".exr";
     o.image.compression = s.compression;
     o.image.channels = s.channels;
     // A resume refuses a database these settings did not write (the product

@@ -17,7 +17,7 @@ class CinemaWriter;
 // new one, entry by entry.
 class CinemaWriterNode final : public Filter {
 public:
-    enum class Format { Png, Exr };
+    enum class Format { Png, Exr, H5 };
     enum class Mode { Create, Overwrite, Resume };
     struct Settings;
 
@@ -42,10 +42,11 @@ private:
                      "The database folder to write (name.cdb), relative to the output folder (--output) or the "
                      "pipeline's"};
     EnumIn<Format> format_{"format",
-                           {{Format::Png, "png"}, {Format::Exr, "exr"}},
+                           {{Format::Png, "png"}, {Format::Exr, "exr"}, {Format::H5, "h5"}},
                            Format::Png,
                            "png: 8-bit sRGB pictures (R, G, B and A when present), for browsing and movies; exr: "
-                           "float channels and the camera, for further shading"};
+                           "float channels and the camera, for further shading; h5: pycinema's HDF5 images "
+                           "(every channel, depth normalised, colour as 8-bit rgba, the camera and the row in meta)"};
     StringIn channels_{"channels", "",
                        "Channels to store, comma separated: PNG 1-4 float channels (default R, G, B(, A)); EXR "
                        "default all"};

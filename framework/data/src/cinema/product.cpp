@@ -1,5 +1,7 @@
 // Reading one product by its extension (images, .npz arrays, .vti images),
 // and telling the products that are geometry (meshes, volumes) from images.
+#include "../formats/h5_image.h"
+
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
 #include <darkroom/data/cinema/product.h>
@@ -146,6 +148,12 @@ std::optional<GeometryProduct> geometryProduct(const std::string& path) {
 std::shared_ptr<WritableBuffer> readCinemaProduct(const std::string& path, Diagnostics* warnings) {
     const std::string ext = extensionOf(path);
     if (ext == ".npz") return npzBuffer(path);
+    if (ext == ".h5") {
+        h5::Image image = h5::readImageFile(path);
+        if (warnings)
+            for (auto& w : image.warnings) warnings->push_back(std::move(w));
+        return std::move(image.buffer);
+    }
     if (ext == ".vti") {
         // TTK's 2-D images are the common case: read first, and only a
         // failure asks whether the file is a volume.

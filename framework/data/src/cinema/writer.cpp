@@ -2,6 +2,7 @@
 // data.csv, all under a folder lock. See writer.h for the guarantees.
 #include "database_lock.h"
 #include "database_marker.h"
+#include "../formats/h5_image.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
@@ -517,6 +518,31 @@ bool CinemaWriter::hasEntry(const CinemaParameters& parameters) const {
     return it != impl_->entries.end() && it->second.cells == cells;
 }
 
+namespace {
+
+// The product of one entry: an image file by its extension, or pycinema's
+// .h5 with the entry's parameters in its meta group, as pycinema's writer
+// keeps them there (docs/formats.md): numbers as numbers.
+void writeProduct(const Buffer& image, const std::string& path, const CinemaParameters& parameters,
+                  const CinemaWriterOptions& options) {
+    if (options.productExtension != ".h5") return writeImage(image, path, options.image);
+    h5::MetaValues meta;
+    for (const auto& [column, value] : parameters) {
+        // A cell copied as text from another database ("2.0") that reads as
+        // a number in data.csv is a number to pycinema too.
+        double number = 0;
+        if (value.isNumber())
+            meta[column] = value.number();
+        else if (parseCsvNumber(value.text(), number))
+            meta[column] = number;
+        else
+            meta[column] = value.text();
+    }
+    h5::writeImageFile(image, path, meta);
+}
+
+}  // namespace
+
 void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& image,
                             const std::map<std::string, std::string>& attachments) {
     Impl& d = *impl_;
@@ -531,7 +557,7 @@ void CinemaWriter::addEntry(const CinemaParameters& parameters, const Buffer& im
     }
     // The product first (atomically), the row naming it second: a kill in
     // between leaves a product no row names, which a resume rewrites.
-    writeImage(image, (fs::path(d.folder) / file).string(), d.options.image);
+    writeProduct(image, (fs::path(d.folder) / file).string(), parameters, d.options);
     for (const auto& a : d.options.attachments)
         writeFileAtomic((fs::path(d.folder) / d.attachmentNameOf(file, a)).string(), attachments.at(a.column));
     std::lock_guard<std::mutex> g(d.mutex);

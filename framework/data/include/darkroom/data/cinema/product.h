@@ -15,6 +15,8 @@ namespace darkroom {
 //   must be 2-D (rows, columns) arrays of one size, rows top to bottom as
 //   stored. A 3-D (rows, columns, k) member gives channels "name.0".."name.k-1".
 // - .vti: VTK XML ImageData (TTK CinemaImaging), see formats/vti.h.
+// - .h5: pycinema's (and ParaView's Cinema plugin's) HDF5 images, groups
+//   channels and meta (docs/formats.md, "pycinema's HDF5 images").
 // - anything else: readImage (PNG, JPEG, TIFF, EXR, ...).
 // Conversions worth knowing are appended to `warnings` when given.
 // Throws darkroom::Error naming the file; InputError with geometryProduct's

@@ -82,8 +82,10 @@ struct CinemaWriterOptions {
     // match; a folder without the marker is refused.
     bool resume = false;
     ImageWriteOptions image;  // compression etc. of the products
-    // ".exr" (every channel, camera in the header) or an 8-bit format OIIO
-    // writes (".png": linear colour sRGB-encoded, see writeImage).
+    // ".exr" (every channel, camera in the header), an 8-bit format OIIO
+    // writes (".png": linear colour sRGB-encoded, see writeImage), or ".h5":
+    // pycinema's HDF5 layout, the entry's parameters in its meta group
+    // (docs/formats.md, "pycinema's HDF5 images").
     std::string productExtension = ".exr";
     // Columns after FILE, each with a file per entry (addEntry's attachments).
     std::vector<CinemaAttachmentColumn> attachments;
