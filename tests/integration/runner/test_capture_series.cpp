@@ -73,16 +73,16 @@ std::string scene(const std::string& file, const std::string& extra = "") {
            "channels:\n  objectId: true\n";
 }
 
-struct Row {
+struct DbRow {
     std::map<std::string, std::string> cells;
     std::string product;
 };
 
-std::vector<Row> rows(const std::string& db) {
+std::vector<DbRow> rows(const std::string& db) {
     const CinemaDatabase d = CinemaDatabase::open(db);
-    std::vector<Row> out;
+    std::vector<DbRow> out;
     for (std::size_t r = 0; r < d.rowCount(); ++r) {
-        Row row;
+        DbRow row;
         for (std::size_t c : d.parameterColumns()) row.cells[d.columns()[c].name] = d.cell(r, c);
         row.product = d.productPath(r);
         out.push_back(std::move(row));
@@ -90,20 +90,23 @@ std::vector<Row> rows(const std::string& db) {
     return out;
 }
 
-Camera cameraOf(const Row& row) {
+Camera cameraOf(const DbRow& row) {
     const auto image = readImage(row.product);
     EXPECT_TRUE(image->metadata().camera.has_value()) << row.product;
     return image->metadata().camera.value_or(Camera{});
 }
 
 // Pixels of object `id` in the product.
-std::size_t pixelsOf(const Row& row, std::uint32_t id) {
+std::size_t pixelsOf(const DbRow& row, std::uint32_t id) {
     const auto image = readImage(row.product);
     const std::uint32_t* ids = image->hostUInt("objectId");
     std::size_t n = 0;
     for (std::size_t i = 0; ids && i < std::size_t(image->width()) * image->height(); ++i) n += ids[i] == id;
     return n;
 }
+
+// The collection's time of step i as data.csv writes it: "0.3" (i / 10).
+std::string tenth(int i) { return i % 10 ? std::to_string(i / 10) + "." + std::to_string(i % 10) : std::to_string(i / 10); }
 
 #define REQUIRE_SERIES(dir)                                                                                    \
     if (!writeSeries(dir)) GTEST_SKIP() << "meshio could not write the series: " << test::readText(dir.file("py.err"))
@@ -116,12 +119,12 @@ TEST(CaptureSeries, PvdGivesOneDatabaseWithTimeAndCamerasThatStayPut) {
     test::writeText(dir.file("s.yaml"), scene("series.pvd"));
     const auto cap = runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("out.cdb")});
     ASSERT_EQ(cap.exitCode, 0) << cap.err;
-    const std::vector<Row> all = rows(dir.file("out.cdb"));
+    const std::vector<DbRow> all = rows(dir.file("out.cdb"));
     ASSERT_EQ(all.size(), std::size_t(kSteps * 6));  // 12 steps x 3 phi x 2 theta
     std::map<std::string, int> perTime;
     std::map<std::string, Camera> first;  // per phi/theta
     std::map<std::string, std::size_t> staticPixels;  // per time, over all cameras
-    for (const Row& r : all) {
+    for (const DbRow& r : all) {
         ASSERT_EQ(r.cells.size(), 3u);  // time, phi, theta
         ++perTime[r.cells.at("time")];
         const std::string view = r.cells.at("phi") + "/" + r.cells.at("theta");
@@ -134,7 +137,7 @@ TEST(CaptureSeries, PvdGivesOneDatabaseWithTimeAndCamerasThatStayPut) {
     }
     ASSERT_EQ(perTime.size(), std::size_t(kSteps));
     for (int i = 0; i < kSteps; ++i) {
-        const std::string t = CinemaValue(0.1 * i).str();
+        const std::string t = tenth(i);
         EXPECT_EQ(perTime[t], 6) << "time " << t;
         EXPECT_GT(staticPixels[t], 0u) << "the static particles are missing at time " << t;
     }
@@ -149,10 +152,10 @@ TEST(CaptureSeries, FramingPerStepMovesTheCameras) {
     const auto cap = runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("out.cdb")});
     ASSERT_EQ(cap.exitCode, 0) << cap.err;
     std::map<std::string, Camera> at0, at11;
-    for (const Row& r : rows(dir.file("out.cdb"))) {
+    for (const DbRow& r : rows(dir.file("out.cdb"))) {
         const std::string view = r.cells.at("phi") + "/" + r.cells.at("theta");
         if (r.cells.at("time") == "0") at0[view] = cameraOf(r);
-        if (r.cells.at("time") == CinemaValue(1.1).str()) at11[view] = cameraOf(r);
+        if (r.cells.at("time") == tenth(11)) at11[view] = cameraOf(r);
     }
     ASSERT_EQ(at0.size(), 6u);
     ASSERT_EQ(at11.size(), 6u);
@@ -166,7 +169,7 @@ TEST(CaptureSeries, GlobTimesStepsByTheNumberInTheirNames) {
     const auto cap = runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("out.cdb")});
     ASSERT_EQ(cap.exitCode, 0) << cap.err;
     std::map<std::string, int> perTime;
-    for (const Row& r : rows(dir.file("out.cdb"))) ++perTime[r.cells.at("time")];
+    for (const DbRow& r : rows(dir.file("out.cdb"))) ++perTime[r.cells.at("time")];
     ASSERT_EQ(perTime.size(), std::size_t(kSteps));
     for (int i = 0; i < kSteps; ++i) EXPECT_EQ(perTime[std::to_string(i)], 6) << i;
 }
@@ -182,10 +185,10 @@ TEST(CaptureSeries, CinemaDatabaseColumnsAreCarried) {
     test::writeText(dir.file("s.yaml"), scene("source.cdb"));
     const auto cap = runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("out.cdb")});
     ASSERT_EQ(cap.exitCode, 0) << cap.err;
-    const std::vector<Row> all = rows(dir.file("out.cdb"));
+    const std::vector<DbRow> all = rows(dir.file("out.cdb"));
     ASSERT_EQ(all.size(), std::size_t(kSteps * 6));
     std::map<std::string, int> perTime;
-    for (const Row& r : all) {
+    for (const DbRow& r : all) {
         EXPECT_EQ(r.cells.at("run"), "viscous");
         ++perTime[r.cells.at("time")];
     }
@@ -204,15 +207,15 @@ TEST(CaptureSeries, SeveralSeriesAreMatchedByTime) {
     EXPECT_NE(bad.err.find("object 'copy' has no step at time 0.1"), std::string::npos) << bad.err;
     // ... unless the glob is given the collection's times.
     std::string times = "    time: [";
-    for (int i = 0; i < kSteps; ++i) times += (i ? ", " : "") + CinemaValue(0.1 * i).str();
+    for (int i = 0; i < kSteps; ++i) times += (i ? ", " : "") + tenth(i);
     s.insert(s.find("    translate: [0, 3, 0]"), times + "]\n");
     test::writeText(dir.file("s.yaml"), s);
     const auto good = runDarkroom({"capture", dir.file("s.yaml"), "-o", dir.file("good.cdb")});
     ASSERT_EQ(good.exitCode, 0) << good.err;
     std::size_t copyPixels = 0;
-    const std::vector<Row> all = rows(dir.file("good.cdb"));
+    const std::vector<DbRow> all = rows(dir.file("good.cdb"));
     EXPECT_EQ(all.size(), std::size_t(kSteps * 6));
-    for (const Row& r : all) copyPixels += pixelsOf(r, 1);
+    for (const DbRow& r : all) copyPixels += pixelsOf(r, 1);
     EXPECT_GT(copyPixels, 0u);
 }
 
@@ -240,7 +243,7 @@ TEST(CaptureSeries, ResumeRecapturesOnlyMissingSteps) {
     ::waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFSIGNALED(status)) << "the capture finished before it could be killed";
     std::map<std::string, fs::file_time_type> before;
-    for (const Row& r : rows(db)) before[r.product] = fs::last_write_time(r.product);
+    for (const DbRow& r : rows(db)) before[r.product] = fs::last_write_time(r.product);
     ASSERT_GE(before.size(), 12u);  // two whole steps at least
     ASSERT_LT(before.size(), std::size_t(kSteps * 6));
 
@@ -251,7 +254,7 @@ TEST(CaptureSeries, ResumeRecapturesOnlyMissingSteps) {
                                " kept"),
               std::string::npos)
         << resumed.err;
-    const std::vector<Row> all = rows(db);
+    const std::vector<DbRow> all = rows(db);
     EXPECT_EQ(all.size(), std::size_t(kSteps * 6));
     for (const auto& [product, time] : before) EXPECT_EQ(fs::last_write_time(product), time) << product << " rewritten";
 }
@@ -273,7 +276,7 @@ TEST(CaptureSeries, BadSeriesAreReportedWithTheFileAndWhatWasExpected) {
     test::writeText(dir.file("missing.pvd"), pvd);
     const auto missing = capture("missing.pvd");
     EXPECT_EQ(missing.exitCode, 2);
-    EXPECT_NE(missing.err.find("missing.pvd:6: DataSet at timestep 0.3 names"), std::string::npos) << missing.err;
+    EXPECT_NE(missing.err.find("missing.pvd:7: DataSet at timestep 0.3 names"), std::string::npos) << missing.err;
     EXPECT_NE(missing.err.find("missing.vtu', which does not exist"), std::string::npos) << missing.err;
 
     test::writeText(dir.file("broken.pvd"), "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\"");
