@@ -172,5 +172,32 @@ TEST(CaptureOverRanks, ABadSceneFailsOnEveryRankWithOneMessage) {
     EXPECT_EQ(r.err.find("representation must be", first + 1), std::string::npos) << r.err;
 }
 
+// A time series (issue 29): the ranks share the first pass over the steps
+// (their bounds), then capture each step as a static scene, each holding
+// its part; the database equals one process's, byte for byte.
+TEST(CaptureOverRanks, ATimeSeriesWritesTheSingleProcessDatabase) {
+    TempDir dir;
+    const VtpPiece field = merged(heightFieldPieces(17, 21, 5));
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n<Collection>\n";
+    for (int k = 0; k < 5; ++k) {
+        VtpPiece step = field;
+        for (std::size_t i = 0; i < step.points.size(); i += 3) step.points[i] *= 1.0f + 0.5f * float(k);  // grows
+        writeVtp(dir.file("step_" + std::to_string(k) + ".vtp"), step);
+        pvd += "<DataSet timestep=\"" + std::to_string(k) + "\" file=\"step_" + std::to_string(k) + ".vtp\"/>\n";
+    }
+    writeText(dir.file("series.pvd"), pvd + "</Collection>\n</VTKFile>\n");
+    writeText(dir.file("scene.yaml"),
+              "objects:\n  - file: series.pvd\n  - generator: particles\n    parameters: {count: 400}\n"
+              "cameras:\n  resolution: [40, 32]\n  grid: {phi: [0, 120], theta: [0, 60]}\n"
+              "channels:\n  scalars: [height]\n  objectId: true\n  primitiveId: true\n");
+    const RunResult one = runAlone({"capture", dir.file("scene.yaml"), "-o", dir.file("one.cdb"), "-q"});
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    const RunResult many = runOnRanks(3, {"capture", dir.file("scene.yaml"), "-o", dir.file("many.cdb"), "-q"});
+    ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
+    EXPECT_EQ(compareFolders(dir.file("one.cdb"), dir.file("many.cdb")), "");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("one.cdb")), {}), 2 + 5 * 4);
+    EXPECT_NE(readText(dir.file("many.cdb/data.csv")).find("time,phi,theta,FILE"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace darkroom::test

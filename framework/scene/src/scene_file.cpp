@@ -18,6 +18,7 @@
 #include <darkroom/scene/mesh_readers.h>
 #include <darkroom/scene/scene_file.h>
 #include <darkroom/scene/scene_partition.h>
+#include <darkroom/scene/time_series.h>
 #include <darkroom/scene/volume.h>
 
 #include <yaml-cpp/yaml.h>
@@ -63,7 +64,10 @@ public:
         // Known before the objects load: isosurfaces then keep their gradient.
         const bool normalsOn = normalsChannel(root["channels"], d.normals);
         vertexNormals_ = (normalsOn || options_.normals) && d.normals.style == NormalsOptions::Style::Smooth;
-        for (const auto& o : objects) loadObject(o, *d.scene, d.warnings, d.pointLists);
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            objectIndex_ = i;
+            loadObject(objects[i], *d.scene, d.warnings, d.pointLists);
+        }
         defaultRadii(*d.scene);
         defaultPointListRadii(*d.scene, d.pointLists);
         if (root["backend"]) d.backend = text(root["backend"], "backend");
@@ -197,7 +201,7 @@ private:
                                           " needs a volume file (.vtu with 3D cells or .vti), not a generator");
         try {
             if (hasFile) {
-                std::filesystem::path p = text(o["file"], "file");
+                std::filesystem::path p = stepFile(o, name);
                 if (p.is_relative()) p = std::filesystem::path(baseDir_) / p;
                 const std::string path = p.lexically_normal().string();
                 if (std::find(inputFiles_.begin(), inputFiles_.end(), path) == inputFiles_.end())
@@ -251,11 +255,25 @@ private:
         }
     }
 
+    // The file an object draws: its `file:`, or this step's file of the
+    // series it names (time_series.h), which only a series capture loads.
+    std::string stepFile(const YAML::Node& o, const std::string& name) const {
+        const std::string value = text(o["file"], "file");
+        const bool series = isSeriesFile(value, baseDir_);
+        if (o["time"] && !series)
+            fail(o["time"], "'time' only applies to a time series (a glob pattern in 'file')");
+        if (!series) return value;
+        if (const auto f = options_.stepFiles.find(objectIndex_); f != options_.stepFiles.end()) return f->second;
+        fail(o["file"], "object '" + name + "': '" + value + "' is a time series (a glob pattern, a .pvd or a " +
+                            "Cinema database); `darkroom capture` captures it step by step, here one mesh file is " +
+                            "expected");
+    }
+
     void loadObject(const YAML::Node& o, Scene& scene, std::vector<std::string>& warnings,
                     std::vector<SceneObject>& pointLists) {
         if (!o.IsMap()) fail(o, "each object must be a map (with 'file' or 'generator')");
         checkKeys(o, {"name", "file", "generator", "parameters", "representation", "contourBy", "isosurfaces", "planes",
-                      "radius", "fields", "translate", "scale", "store"},
+                      "radius", "fields", "translate", "scale", "store", "time"},
                   "an object");
         bool asPointList = false;
         if (const YAML::Node st = o["store"]) {
@@ -355,7 +373,7 @@ private:
     // Lines and points read from files carry radius 0: give them 0.5% of the
     // scene's bounding radius unless the scene file set one.
     void defaultRadii(Scene& scene) {
-        const double r = bounds(scene).radius();
+        const double r = frameBounds(scene).radius();
         const float fallback = float(r > 0 ? 0.005 * r : 0.01);
         for (auto& o : scene.objects) {
             if (o.representation == Representation::Surface) continue;
@@ -437,12 +455,15 @@ private:
         Camera proto;
         proto.width = proto.height = 512;
         proto.fovYDegrees = 30.0;
-        const Bounds b = bounds(scene);
+        const Bounds b = frameBounds(scene);
         const double radius = camera_bounds::sceneRadius(b);
         const Vec3 center = camera_bounds::sceneCentre(b);
         if (n) {
             if (!n.IsMap()) fail(n, "'cameras' must be a map (projection, fov, height, resolution, grid or list)");
-            checkKeys(n, {"projection", "fov", "height", "resolution", "grid", "list"}, "cameras");
+            checkKeys(n, {"projection", "fov", "height", "resolution", "grid", "list", "framing"}, "cameras");
+            if (const YAML::Node f = n["framing"]; f && text(f, "framing") != "series" && f.Scalar() != "step")
+                fail(f, "framing must be series (a time series framed once, on the union of its steps' bounds) "
+                        "or step (each step framed on its own bounds)");
             if (const YAML::Node p = n["projection"]) {
                 const std::string s = text(p, "projection");
                 if (s == "perspective") proto.projection = Camera::Projection::Perspective;
@@ -559,6 +580,9 @@ private:
         return group_ ? partition::agreeBounds(scene.bounds(), *group_) : scene.bounds();
     }
 
+    // What cameras frame: a series' bounds when given (SceneLoadOptions::framing), else the scene's.
+    Bounds frameBounds(const Scene& scene) const { return options_.framing ? *options_.framing : bounds(scene); }
+
     std::string source_, baseDir_;
     mutable std::map<std::string, std::shared_ptr<VolumeMesh>> volumes_;
     mutable std::vector<std::string> inputFiles_;
@@ -566,6 +590,7 @@ private:
     mutable bool loadedPieceWise_ = false;  // set by loadParts for the object being loaded
     std::vector<bool> pieceWise_;
     bool loadingPointList_ = false;
+    std::size_t objectIndex_ = 0;  // of the object being loaded, in the file's `objects`
     SceneLoadOptions options_;
     // Whether surfaces get vertex normals, and those held per scene object
     // until all are loaded (scene_normals.h).
@@ -606,12 +631,12 @@ SceneDescription loadSceneFile(const std::string& path, const SceneLoadOptions& 
 }
 
 PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::string& sourceName,
-                                    const std::string& baseDir, ProcessGroup& group) {
+                                    const std::string& baseDir, ProcessGroup& group, const SceneLoadOptions& options) {
     // Every process parses the same text, so a problem in it is met by all
     // at the same point; problems met by some processes only (their pieces)
     // are agreed inside the parser.
     const YAML::Node root = loadYaml(yamlText, sourceName);
-    Parser parser(sourceName, baseDir, &group);
+    Parser parser(sourceName, baseDir, &group, options);
     PartitionedScene out;
     try {
         out.description = parser.parse(root);
@@ -645,7 +670,7 @@ PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::stri
     return out;
 }
 
-PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group) {
+PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group, const SceneLoadOptions& options) {
     std::string text, error;
     try {
         text = readInputFile(path, "scene file");
@@ -653,7 +678,7 @@ PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group)
         error = e.what();
     }
     partition::agreeNoError(error, group);
-    return parseSceneFilePart(text, path, std::filesystem::path(path).parent_path().string(), group);
+    return parseSceneFilePart(text, path, std::filesystem::path(path).parent_path().string(), group, options);
 }
 
 std::pair<std::size_t, std::size_t> blockOf(std::size_t count, int rank, int size) {

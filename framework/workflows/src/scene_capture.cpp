@@ -1,5 +1,5 @@
 // `darkroom capture`'s whole job, alone or over processes, for every front end.
-#include <darkroom/workflows/capture.h>
+#include "scene_capture_steps.h"
 
 #include <darkroom/error.h>
 #include <darkroom/core/registry.h>
@@ -13,16 +13,13 @@
 
 namespace darkroom::workflows {
 
-namespace {
+namespace detail {
 
-// The whole scene alone; over several processes, this one's part (each
-// loads the same objects, holding a share of their primitives). Errors are
-// the same on every process.
-PartitionedScene loadScene(const std::string& path, ProcessGroup& group) {
+PartitionedScene loadScene(const std::string& path, ProcessGroup& group, const SceneLoadOptions& options) {
     try {
-        if (group.size() > 1) return loadSceneFilePart(path, group);
+        if (group.size() > 1) return loadSceneFilePart(path, group, options);
         PartitionedScene whole;
-        whole.description = loadSceneFile(path);
+        whole.description = loadSceneFile(path, options);
         return whole;
     } catch (const InputError&) {
         throw;
@@ -31,8 +28,6 @@ PartitionedScene loadScene(const std::string& path, ProcessGroup& group) {
     }
 }
 
-// The writer's options: the request's, the scene's point lists as
-// attachments (their contents into `attachments`), and the origin a resume compares.
 CinemaWriterOptions writerOptions(const SceneCapture& r, const SceneDescription& scene,
                                   std::map<std::string, std::string>& attachments) {
     CinemaWriterOptions wo;
@@ -51,9 +46,22 @@ int threadsPerProcess(const SceneCapture& r, const ProcessGroup& group) {
     return std::max(1, cores / std::max(1, group.onThisNode()));
 }
 
-}  // namespace
+}  // namespace detail
+
+using namespace detail;
 
 CaptureSummary captureSceneFile(const SceneCapture& r, const Registry& registry, ProcessGroup& group) {
+    // A scene with time series is captured step by step (series_capture.cpp).
+    SceneSeries series;
+    std::string scanError;
+    try {
+        series = scanSceneSeries(r.scene);
+    } catch (const Error& e) {
+        scanError = e.what();
+    }
+    if (const std::string e = group.agreedError(scanError); !e.empty()) throw InputError(e);
+    if (!series.steps.empty()) return captureSceneSeries(r, series, registry, group);
+
     const PartitionedScene part = loadScene(r.scene, group);
     const SceneDescription& scene = part.description;
     if (r.warn)

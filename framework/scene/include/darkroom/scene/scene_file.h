@@ -9,6 +9,8 @@
 #include <darkroom/scene.h>
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,6 +44,13 @@ struct SceneLoadOptions {
     // Prepare the normal channels even if the file's channels leave them
     // off (the Capture node's `normals` input), in the file's style.
     bool normals = false;
+    // One step of a time series (time_series.h): per object (its index in
+    // the scene file's `objects`), the file it draws instead of its `file:`
+    // (a glob, .pvd or database, which alone cannot be loaded).
+    std::map<std::size_t, std::string> stepFiles;
+    // Frame the cameras (and size default radii) on these bounds rather than
+    // the scene's own: the union of a series' steps, so cameras stay put.
+    std::optional<Bounds> framing;
 };
 
 struct SceneDescription {

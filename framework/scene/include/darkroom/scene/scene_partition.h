@@ -44,9 +44,11 @@ struct PartitionedScene {
 
 // Collective over `group`. Throws darkroom::Error (the same on every process)
 // as loadSceneFile does, or naming the process whose part failed.
-DARKROOM_API PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group);
+DARKROOM_API PartitionedScene loadSceneFilePart(const std::string& path, ProcessGroup& group,
+                                                const SceneLoadOptions& options = {});
 DARKROOM_API PartitionedScene parseSceneFilePart(const std::string& yamlText, const std::string& sourceName,
-                                                 const std::string& baseDir, ProcessGroup& group);
+                                                 const std::string& baseDir, ProcessGroup& group,
+                                                 const SceneLoadOptions& options = {});
 
 // The contiguous block [first, last) of `count` items that process `rank` of
 // `size` takes: first = rank * count / size.

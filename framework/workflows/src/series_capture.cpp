@@ -1,0 +1,204 @@
+// `darkroom capture` of a scene whose objects include time series
+// (darkroom/scene/time_series.h): ONE database, rows = steps x cameras, the
+// series' columns (`time`, or a source database's) before the cameras'.
+//
+// Steps are loaded one at a time (this process's part of it over several
+// processes), captured through the same loop as a static scene
+// (captureEntries), and dropped before the next, so memory is bounded by one
+// step. Cameras stay put: unless the scene asks for `framing: step`, a first
+// pass loads each step once (the processes sharing the steps) for the union
+// of their bounds, on which every step is then framed — a movie over time
+// that reframes each step zooms in and out as the data grows and shrinks.
+#include "scene_capture_steps.h"
+
+#include <darkroom/error.h>
+#include <darkroom/core/registry.h>
+#include <darkroom/core/run_filter.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace darkroom::workflows::detail {
+
+namespace {
+
+SceneLoadOptions stepOptions(const SeriesStep& step, const std::optional<Bounds>& framing) {
+    SceneLoadOptions o;
+    o.stepFiles = step.files;
+    o.framing = framing;
+    return o;
+}
+
+Bounds unite(Bounds a, const Bounds& b) {
+    if (b.empty()) return a;
+    a.lo = {std::min(a.lo.x, b.lo.x), std::min(a.lo.y, b.lo.y), std::min(a.lo.z, b.lo.z)};
+    a.hi = {std::max(a.hi.x, b.hi.x), std::max(a.hi.y, b.hi.y), std::max(a.hi.z, b.hi.z)};
+    return a;
+}
+
+// The first pass: the union of every step's bounds. Each process loads its
+// block of steps whole, one at a time, keeping only their bounds.
+Bounds seriesBounds(const SceneCapture& r, const SceneSeries& series, ProcessGroup& group) {
+    Bounds mine;
+    std::string error;
+    const auto [first, last] = blockOf(series.steps.size(), group.rank(), group.size());
+    try {
+        for (std::size_t s = first; s < last; ++s) {
+            if (group.lead() && r.progress)
+                r.progress(0.0, "bounds of " + series.steps[s].label);
+            mine = unite(mine, loadSceneFile(r.scene, stepOptions(series.steps[s], std::nullopt)).scene->bounds());
+        }
+    } catch (const Error& e) {
+        error = e.what();
+    }
+    if (const std::string e = group.agreedError(error); !e.empty()) throw InputError(e);
+    char text[160] = "";
+    if (!mine.empty())
+        std::snprintf(text, sizeof text, "%.17g %.17g %.17g %.17g %.17g %.17g", mine.lo.x, mine.lo.y, mine.lo.z,
+                      mine.hi.x, mine.hi.y, mine.hi.z);
+    Bounds all;
+    for (const std::string& t : group.allGather(text)) {
+        std::istringstream in(t);
+        Bounds b;
+        if (in >> b.lo.x >> b.lo.y >> b.lo.z >> b.hi.x >> b.hi.y >> b.hi.z) all = unite(all, b);
+    }
+    return all;
+}
+
+// The database's rows of one step: the step's column values, then the camera's.
+std::vector<CaptureEntry> stepEntries(const SceneSeries& series, const SeriesStep& step,
+                                      const SceneDescription& scene) {
+    std::vector<CaptureEntry> entries = captureEntriesOf(scene);
+    for (CaptureEntry& e : entries) {
+        for (std::size_t c = 0; c < series.columns.size(); ++c) e.parameters.emplace(series.columns[c], step.values[c]);
+        e.label = step.label + " " + e.label;
+    }
+    return entries;
+}
+
+// Whether the database (open on the lead) holds every row of a step, agreed.
+bool stepComplete(const CinemaWriter* writer, const std::vector<CaptureEntry>& cameraRows, const SceneSeries& series,
+                  const SeriesStep& step, ProcessGroup& group) {
+    std::string complete = "0";
+    if (writer) {
+        complete = "1";
+        for (CaptureEntry e : cameraRows) {
+            for (std::size_t c = 0; c < series.columns.size(); ++c)
+                e.parameters.insert_or_assign(series.columns[c], step.values[c]);
+            if (!writer->hasEntry(e.parameters)) complete = "0";
+        }
+    }
+    group.broadcast(complete);
+    return complete == "1";
+}
+
+// Refuses a series column the cameras also write (a database column `phi`).
+void checkColumns(const SceneSeries& series, const SceneDescription& scene) {
+    for (const auto& [name, value] : scene.cameras.front().parameters)
+        if (std::find(series.columns.begin(), series.columns.end(), name) != series.columns.end())
+            throw InputError(scene.path + ": the time series' column '" + name +
+                             "' is also a camera column; expected the series' columns to differ from the cameras'");
+}
+
+// The origin a resume compares: the first step's scene, reading every file of every step.
+SceneDescription seriesOrigin(SceneDescription scene, const SceneSeries& series) {
+    scene.scene.reset();
+    for (const std::string& f : series.files)
+        if (std::find(scene.inputFiles.begin(), scene.inputFiles.end(), f) == scene.inputFiles.end())
+            scene.inputFiles.push_back(f);
+    return scene;
+}
+
+// Where one step's capture writes: the database, opened by the lead at the
+// first step loaded (its columns and origin are known then), and the rows
+// of a step without the series' columns.
+struct SeriesOutput {
+    std::unique_ptr<CinemaWriter> writer;
+    std::vector<CaptureEntry> cameraRows;
+};
+
+// Loads step `s` (this process's part), captures its cameras through
+// captureEntries and drops it again.
+CaptureSummary captureStep(const SceneCapture& r, const SceneSeries& series, std::size_t s,
+                           const std::optional<Bounds>& framing, const Registry& registry, Context& ctx,
+                           ProcessGroup& group, SeriesOutput& out) {
+    const SeriesStep& step = series.steps[s];
+    if (group.lead() && r.progress) r.progress(double(s) / double(series.steps.size()), "loading " + step.label);
+    const PartitionedScene part = loadScene(r.scene, group, stepOptions(step, framing));
+    const SceneDescription& scene = part.description;
+    if (r.warn)
+        for (const auto& w : scene.warnings) r.warn(step.label + ": " + w);
+    if (scene.cameras.empty()) throw InputError(r.scene + ": the scene has no cameras");
+    checkColumns(series, scene);
+
+    std::string error;
+    std::unique_ptr<CaptureBackend> backend;
+    CaptureSettings settings;
+    try {
+        backend = registry.createBackend(scene.backend);
+        backend->setScene(scene.scene);
+        CinemaWriterOptions scratch;
+        settings.attachments = pointListAttachments(scene, scratch);
+    } catch (const Error& e) {
+        error = e.what();
+    }
+    if (const std::string e = group.agreedError(error); !e.empty()) throw InputError(e);
+
+    settings.openDatabase = [&]() -> CinemaWriter& {
+        if (!out.writer) {
+            std::map<std::string, std::string> attachments;
+            const CinemaWriterOptions wo = writerOptions(r, seriesOrigin(scene, series), attachments);
+            std::vector<std::string> columns = series.columns;
+            for (const auto& [k, v] : scene.cameras.front().parameters) columns.push_back(k);
+            out.writer = std::make_unique<CinemaWriter>(r.output, columns, wo);
+        }
+        return *out.writer;
+    };
+    settings.request = scene.request;
+    settings.primitiveOffsets = part.primitiveOffset;
+    settings.cancel = r.cancel;
+    if (r.progress)
+        settings.progress = [&](double f, const std::string& label) {
+            r.progress((double(s) + f) / double(series.steps.size()), label);
+        };
+    const RenderFn render = [&](const Camera& camera, const CaptureRequest& request) {
+        return backend->render(camera, request, ctx);
+    };
+    out.cameraRows = captureEntriesOf(scene);
+    return captureEntries(stepEntries(series, step, scene), render, group, settings);
+}
+
+}  // namespace
+
+CaptureSummary captureSceneSeries(const SceneCapture& r, const SceneSeries& series, const Registry& registry,
+                                  ProcessGroup& group) {
+    const std::optional<Bounds> framing =
+        series.framePerStep ? std::nullopt : std::optional<Bounds>(seriesBounds(r, series, group));
+    FilterRunOptions ro;
+    ro.threads = threadsPerProcess(r, group);
+    ro.registry = &registry;
+    const std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
+
+    SeriesOutput out;
+    CaptureSummary total;
+    const std::size_t count = series.steps.size();
+    for (std::size_t s = 0; s < count; ++s) {
+        const SeriesStep& step = series.steps[s];
+        // Once the database is open, a resume skips the steps it holds whole without loading them.
+        if (!out.cameraRows.empty() && stepComplete(out.writer.get(), out.cameraRows, series, step, group)) {
+            total.kept += out.cameraRows.size();
+            continue;
+        }
+        const CaptureSummary summary = captureStep(r, series, s, framing, registry, *ctx, group, out);
+        total.rendered += summary.rendered;
+        total.kept += summary.kept;
+        total.renderSeconds += summary.renderSeconds;
+        total.compositeSeconds += summary.compositeSeconds;
+        total.writeSeconds += summary.writeSeconds;
+    }
+    if (out.writer) out.writer->finish();
+    return total;
+}
+
+}  // namespace darkroom::workflows::detail
