@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace darkroom::h5 {
 
 namespace {
@@ -40,6 +42,22 @@ void checkStorage(hid_t dataset, const DatasetInfo& info, const std::string& whe
         throw InputError(fmt::format("{}: a virtual or unknown storage layout; expected contiguous, compact or "
                                      "chunked storage in the file itself",
                                      where));
+    // HDF5 allocates what the file says a dataset's stored bytes are before
+    // reading them: a damaged chunk index declaring gigabytes in a small
+    // file would be believed (found by fuzz_h5).
+    hsize_t fileBytes = 0;
+    Handle file(H5Iget_file_id(dataset), H5Fclose);
+    const hsize_t stored = H5Dget_storage_size(dataset);
+    if (!file.valid() || H5Fget_filesize(file.get(), &fileBytes) < 0 || stored > fileBytes)
+        throw InputError(fmt::format("{}: the values are said to take more bytes than the file holds ({}); the file "
+                                     "is damaged",
+                                     where, fileBytes));
+    // Unfiltered storage holds every value: HDF5 1.10 copies a compact
+    // dataset's declared size from what it read, however short (fuzz_h5).
+    const std::uint64_t declared = info.elements * info.typeSize;
+    if ((layout == H5D_COMPACT && stored != declared) || (layout == H5D_CONTIGUOUS && stored != 0 && stored < declared))
+        throw InputError(fmt::format("{}: {} bytes stored for {} values of {} bytes; the file is damaged", where,
+                                     stored, info.elements, info.typeSize));
     if (layout != H5D_CHUNKED) return;
     hsize_t chunk[32] = {};
     const int rank = H5Pget_chunk(dcpl.get(), 32, chunk);
@@ -48,8 +66,12 @@ void checkStorage(hid_t dataset, const DatasetInfo& info, const std::string& whe
     // a decoded array, however small the dataset.
     std::uint64_t bytes = info.typeSize;
     for (int d = 0; d < rank; ++d) {
-        if (chunk[d] == 0 || chunk[d] > (std::uint64_t(1) << 32))
-            throw InputError(fmt::format("{}: chunk dimension {} is {}; expected 1 to 2^32", where, d, chunk[d]));
+        // A chunk wider than a fixed-size image serves no writer (h5py and
+        // ParaView choose chunks within the extent), and HDF5 1.10 reads out
+        // of bounds when such a chunk inflates short (found by fuzz_h5).
+        if (chunk[d] == 0 || chunk[d] > std::max<hsize_t>(info.dims[d], 1))
+            throw InputError(fmt::format("{}: chunk dimension {} is {}; expected 1 to the dataset's {}", where, d,
+                                         chunk[d], info.dims[d]));
         bytes = bytes > (std::uint64_t(1) << 62) / chunk[d] ? std::uint64_t(1) << 62 : bytes * chunk[d];
     }
     checkBytes(Limit::DecodedBytes, bytes, where, "one chunk");
@@ -106,6 +128,19 @@ DatasetInfo inspectDataset(hid_t dataset, const std::string& where) {
     info.typeSize = H5Tget_size(type.get());
     info.unsignedInteger = info.typeClass == H5T_INTEGER && H5Tget_sign(type.get()) == H5T_SGN_NONE;
     info.variableString = info.typeClass == H5T_STRING && H5Tis_variable_str(type.get()) > 0;
+    // Numbers as every writer stores them: IEEE floats of 4 or 8 bytes,
+    // integers of 1 to 8, every bit used. HDF5 1.10 converts other layouts
+    // (a 46,084-byte float) out of bounds (found by fuzz_h5).
+    if (info.typeClass == H5T_INTEGER || info.typeClass == H5T_FLOAT) {
+        const std::size_t size = info.typeSize;
+        const bool sizeOk = info.typeClass == H5T_FLOAT ? size == 4 || size == 8
+                                                        : size == 1 || size == 2 || size == 4 || size == 8;
+        if (!sizeOk || H5Tget_precision(type.get()) != 8 * size || H5Tget_offset(type.get()) != 0)
+            throw InputError(fmt::format("{}: a {} of {} bytes, {} bits used; expected a 4- or 8-byte float or a 1- to "
+                                         "8-byte integer using all its bits",
+                                         where, info.typeClass == H5T_FLOAT ? "float" : "integer", size,
+                                         H5Tget_precision(type.get())));
+    }
     checkStorage(dataset, info, where);
     return info;
 }
