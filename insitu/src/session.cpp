@@ -184,23 +184,13 @@ void Session::field(const std::string& object, const std::string& name, const fl
     o->view.fields.push_back({name, values, std::size_t(count), cell});
 }
 
-namespace {
-
-// The writer's messages name the command line's options; a simulation
-// chose a mode of darkroom_insitu_open instead.
-std::string apiWording(std::string message) {
-    for (const auto& [option, mode] : {std::pair<std::string, std::string>{"--overwrite", "DARKROOM_INSITU_OVERWRITE"},
-                                       {"--resume", "DARKROOM_INSITU_RESUME"}})
-        for (std::size_t at; (at = message.find(option)) != std::string::npos;) message.replace(at, option.size(), mode);
-    return message;
-}
-
-}  // namespace
-
 void Session::openWriter(const std::vector<std::string>& columns) {
     CinemaWriterOptions o;
     o.overwrite = mode_ == 1;
     o.resume = mode_ == 2;
+    // A refusal advises what a simulation chooses: darkroom_insitu_open's mode.
+    o.overwriteAdvice = "DARKROOM_INSITU_OVERWRITE";
+    o.resumeAdvice = "DARKROOM_INSITU_RESUME";
     o.image.halfFloat = setup_.halfFloat();
     o.origin = setup_.origin();  // a resume of a database made with another setup is refused
     writer_ = std::make_unique<CinemaWriter>(database_, columns, o);
@@ -240,14 +230,10 @@ void Session::capture() {
     // The database is opened on the first capture, on rank 0, which also
     // decides which rows a resumed session still lacks.
     settings.openDatabase = [&]() -> CinemaWriter& {
-        try {
-            if (!writer_) {
-                std::vector<std::string> columns{"time"};
-                for (const auto& [name, v] : cams.front().first) columns.push_back(name);
-                openWriter(columns);
-            }
-        } catch (const Error& e) {
-            throw Error(apiWording(e.what()));
+        if (!writer_) {
+            std::vector<std::string> columns{"time"};
+            for (const auto& [name, v] : cams.front().first) columns.push_back(name);
+            openWriter(columns);
         }
         return *writer_;
     };

@@ -47,6 +47,7 @@ void expectResumeRefused(const std::function<void(darkroom_insitu*)>& change, co
     for (const auto& p : parts) EXPECT_NE(error.find(p), std::string::npos) << "'" << p << "' not in: " << error;
     // Said the way the API spells it, not the command line's --overwrite.
     EXPECT_EQ(error.find("--overwrite"), std::string::npos) << error;
+    EXPECT_NE(error.find("use DARKROOM_INSITU_OVERWRITE to start afresh"), std::string::npos) << error;
     EXPECT_EQ(readText(db + "/data.csv"), before);
 }
 

@@ -4,6 +4,7 @@
 #include "bindings.h"
 #include "values.h"
 
+#include <darkroom/strings.h>
 #include <darkroom/error.h>
 #include <darkroom/core/evaluator.h>
 #include <darkroom/core/pipeline.h>
@@ -61,7 +62,12 @@ public:
     const PortSpec& input(const std::string& node, const std::string& port) const {
         const Node* n = requireNode(node);
         const PortSpec* p = graph_.ports(*n).input(port);
-        if (!p) throw py::attribute_error(label(*n) + " has no input '" + port + "'; inputs: " + names(graph_.ports(*n).inputs));
+        if (!p) {
+            std::vector<std::string> inputs;
+            for (const auto& in : graph_.ports(*n).inputs) inputs.push_back(in.name);
+            throw py::attribute_error(label(*n) + " has no input '" + port + "'" + didYouMean(port, inputs) +
+                                      "; inputs: " + names(graph_.ports(*n).inputs));
+        }
         return *p;
     }
     void set(const std::string& node, const std::string& port, const py::handle& value) {

@@ -55,10 +55,12 @@ def test_errors_name_the_parameter_the_node_and_the_file(ramp_db, tmp_path):
     p, read, colour = shading(ramp_db)
     with pytest.raises(TypeError, match="node 'colour' input 'channel': expected a str"):
         colour.channel = 3
-    with pytest.raises(AttributeError, match="has no input 'colourmap'; inputs: image, channel, colormap"):
+    with pytest.raises(AttributeError, match=r"has no input 'colourmap' \(did you mean 'colormap'\?\); inputs: image, "):
         colour.colourmap = "viridis"
-    with pytest.raises(dr.Error, match="unknown node type 'NoSuchType'"):
+    with pytest.raises(dr.Error, match="unknown node type 'NoSuchType'; "):
         p.add("NoSuchType")
+    with pytest.raises(dr.Error, match=r"unknown node type 'ColorMaping' \(did you mean 'ColorMapping'\?\)"):
+        p.add("ColorMaping")
     colour.channel = "nothing"
     with pytest.raises(dr.Error) as e:
         p.evaluate(colour.image)

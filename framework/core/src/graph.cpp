@@ -74,7 +74,8 @@ void Graph::touch() { ++revision_; }
 
 const Node& Graph::addNode(const std::string& name, const std::string& type) {
     if (!registry_->filter(type))
-        throw Error("unknown node type '" + type + "'; `darkroom plugins` lists the available types");
+        throw Error("unknown node type '" + type + "'" + didYouMean(type, registry_->typeNames()) +
+                    "; `darkroom plugins` lists the available types");
     addPlaceholder(name, type);
     nodes_.back().placeholder = false;
     return nodes_.back();

@@ -1,6 +1,7 @@
 #include <darkroom/error.h>
-#include <darkroom/core/registry.h>
 #include <darkroom/plugin.h>
+#include <darkroom/strings.h>
+#include <darkroom/core/registry.h>
 
 #include "plugin_scan.h"
 
@@ -306,7 +307,9 @@ std::vector<const RegisteredBackend*> Registry::backends() const {
 
 std::unique_ptr<Filter> Registry::createFilter(const std::string& type) const {
     const RegisteredFilter* f = filter(type);
-    if (!f) throw Error("unknown node type '" + type + "'; `darkroom plugins` lists the available types");
+    if (!f)
+        throw Error("unknown node type '" + type + "'" + didYouMean(type, typeNames()) +
+                    "; `darkroom plugins` lists the available types");
     try {
         std::unique_ptr<Filter> out = f->info.create();
         if (!out) throw Error("the factory returned nothing");

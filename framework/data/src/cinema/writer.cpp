@@ -448,7 +448,8 @@ CinemaWriter::CinemaWriter(std::string path, std::vector<std::string> columnName
     d.columns = std::move(columnNames);
     d.options = std::move(options);
     if (d.options.overwrite && d.options.resume)
-        throw Error(fmt::format("database {}: --overwrite and --resume exclude each other", d.folder));
+        throw Error(fmt::format("database {}: {} and {} exclude each other", d.folder, d.options.overwriteAdvice,
+                                d.options.resumeAdvice));
     d.validateColumns();
 
     std::error_code ec;
@@ -479,7 +480,8 @@ void CinemaWriter::check(std::string path, const CinemaWriterOptions& options) {
     d.csvPath = (fs::path(d.folder) / "data.csv").string();
     d.options = options;
     if (d.options.overwrite && d.options.resume)
-        throw Error(fmt::format("database {}: --overwrite and --resume exclude each other", d.folder));
+        throw Error(fmt::format("database {}: {} and {} exclude each other", d.folder, d.options.overwriteAdvice,
+                                d.options.resumeAdvice));
     std::error_code ec;
     if (!fs::exists(d.folder, ec)) return;
     if (!fs::is_directory(d.folder, ec))
