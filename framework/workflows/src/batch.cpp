@@ -353,6 +353,10 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
         edits.set(d.node, d.port, Value(stagingDatabase(d, group.rank())));
         edits.set(d.node, "mode", Value(std::string("overwrite")));
     }
+    // The selection is "the whole database" to what spans every entry
+    // (ColorMapping's database range), when the reader can say so.
+    if (!settings.where.empty() && graph.ports(*graph.node(settings.reader)).input(kSelectionPort))
+        edits.set(settings.reader, kSelectionPort, Value(settings.where));
     BatchSummary summary;
     summary.selected = p.rows.size();
     summary.kept = p.rows.size() - todo.size();

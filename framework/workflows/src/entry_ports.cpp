@@ -17,7 +17,8 @@ const PortSpec* entryReaderDatabase(const Graph& g, const Node& n) {
 }
 
 bool choosesEntry(const Graph& g, const Node& n, const PortSpec& input) {
-    return (input.name == kEntryPort || input.name == "parameters") && entryReaderDatabase(g, n);
+    return (input.name == kEntryPort || input.name == "parameters" || input.name == kSelectionPort) &&
+           entryReaderDatabase(g, n);
 }
 
 bool isFedARow(const Graph& g, const Node& n) {

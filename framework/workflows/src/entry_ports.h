@@ -12,14 +12,18 @@
 namespace darkroom::workflows {
 
 inline constexpr const char* kEntryPort = "entry";
+// An entry reader's optional String input that the batch sets to its
+// --where: the rows the run covers (CinemaReader passes it on as metadata).
+inline constexpr const char* kSelectionPort = "selection";
 
 // The database input (the first Path input) of an entry reader; nullptr when
 // `n` is not one.
 const PortSpec* entryReaderDatabase(const Graph& g, const Node& n);
 
 // Whether an input of `n` chooses which entry an entry reader reads: `entry`,
-// and `parameters`, the choice by values that `entry` overrides. The batch
-// sets the one and leaves the other; neither says what a pipeline does.
+// `parameters`, the choice by values that `entry` overrides, and
+// `selection`, the rows of the run. The batch sets them per run or entry;
+// none says what a pipeline does.
 bool choosesEntry(const Graph& g, const Node& n, const PortSpec& input);
 
 // Whether an edge feeds one of the node's Row inputs.

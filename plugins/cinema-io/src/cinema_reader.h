@@ -17,7 +17,7 @@ class CinemaReader : public Filter {
 public:
     CinemaReader();
     ~CinemaReader() override;
-    PortList ports() const override { return {database_, entry_, parameters_, file_, strict_, result_, row_}; }
+    PortList ports() const override { return {database_, entry_, parameters_, selection_, file_, strict_, result_, row_}; }
     void execute(Context& ctx) override;
 
 private:
@@ -31,6 +31,9 @@ private:
                          "expression: 'phi > 0 AND theta = 0' (first matching row). Empty = the first row. "
                          "In a composable image set the rows pick one layer ('object=000'), read whole. "
                          "Used when `entry` is -1"};
+    StringIn selection_{"selection", "",
+                        "The rows a run over this database covers, as --where takes them (darkroom run --foreach "
+                        "sets it from its --where): ColorMapping's database range spans them. Empty = every row"};
     StringIn file_{"file", "", "FILE column to read (e.g. FILE2); empty = the first FILE column"};
     BoolIn strict_{"strict", false, "Treat irregular rows in data.csv as errors instead of warnings"};
     ImageOut result_{"image",

@@ -172,8 +172,10 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
     if (symmetric && logScale) throw Error("a log scale cannot be symmetric about zero; turn off 'symmetric'");
     ScalarRange r;
     if (mode == Range::Database) {
-        const auto source = in.metadata().attributes.find("source");
-        const DatabaseRange d = databaseRange(source == in.metadata().attributes.end() ? "" : source->second, channel,
+        const auto& attributes = in.metadata().attributes;
+        const auto source = attributes.find("source"), selection = attributes.find("cinema.selection");
+        const DatabaseRange d = databaseRange(source == attributes.end() ? "" : source->second,
+                                              selection == attributes.end() ? "" : selection->second, channel,
                                               logScale, clip, [&ctx](double f) { ctx.progress(0.5 * f); });
         r.found = d.found, r.low = d.low, r.high = d.high;
         // A database written again (a new capture) changes the range.

@@ -45,8 +45,8 @@ private:
                          Range::Automatic,
                          "automatic: the finite minimum and maximum of the channel over non-background pixels; "
                          "manual: minimum and maximum below; database: over every entry of the Cinema database "
-                         "the image was read from (its CISChannelVarMin/Max, else one scan, cached), so that "
-                         "all its entries share one scale"};
+                         "the image was read from (its CISChannelVarMin/Max, else one scan, cached), or of the "
+                         "reader's selection (a --foreach --where run), so that all its entries share one scale"};
     FloatIn minimum_{"minimum", 0.0, -kBig, kBig, "Value mapped to the start of the map (manual range)"};
     FloatIn maximum_{"maximum", 1.0, -kBig, kBig,
                      "Value mapped to the end of the map (manual range); below minimum flips the map"};

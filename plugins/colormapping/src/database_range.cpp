@@ -8,6 +8,7 @@
 #include <darkroom/data/cinema/database.h>
 #include <darkroom/data/cinema/product.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -60,17 +61,29 @@ std::uint64_t mixStamp(std::uint64_t h, const std::string& path) {
     return fnv(fnv(h, values, sizeof values), path.data(), path.size());
 }
 
-// The rows whose products hold `channel`: one per entry (a composable image
-// set's layer: its first row, which the reader assembles whole).
-std::vector<std::size_t> entryRows(const CinemaDatabase& db) {
-    std::vector<std::size_t> rows;
-    if (!isComposableImageSet(db)) {
-        for (std::size_t r = 0; r < db.rowCount(); ++r) rows.push_back(r);
-        return rows;
+// The rows of `selection` (--where syntax; empty: all), as a set.
+std::set<std::size_t> selectedRows(const CinemaDatabase& db, const std::string& selection) {
+    std::set<std::size_t> rows;
+    if (selection.empty()) {
+        for (std::size_t r = 0; r < db.rowCount(); ++r) rows.insert(r);
+    } else {
+        for (const std::size_t r : db.selectWhere(selection)) rows.insert(r);
     }
+    return rows;
+}
+
+// The selected rows whose products hold `channel`: one per entry (a
+// composable image set's layer: its first row, which the reader assembles
+// whole, counted when any of the layer's rows is selected).
+std::vector<std::size_t> entryRows(const CinemaDatabase& db, const std::set<std::size_t>& selected) {
+    std::vector<std::size_t> rows;
+    if (!isComposableImageSet(db)) return {selected.begin(), selected.end()};
     for (const auto& image : composableImages(db))
-        for (const auto& layer : image.layers)
-            if (!layer.channels.empty()) rows.push_back(layer.channels.front().row);
+        for (const auto& layer : image.layers) {
+            bool any = false;
+            for (const auto& c : layer.channels) any = any || selected.count(c.row);
+            if (any && !layer.channels.empty()) rows.push_back(layer.channels.front().row);
+        }
     return rows;
 }
 
@@ -167,11 +180,12 @@ void extend(DatabaseRange& r, const Buffer& b, const std::string& channel, bool 
     });
 }
 
-bool fromComposableColumns(const CinemaDatabase& db, const std::string& channel, DatabaseRange& r) {
+bool fromComposableColumns(const CinemaDatabase& db, const std::set<std::size_t>& selected,
+                           const std::string& channel, DatabaseRange& r) {
     const auto var = db.findColumn("CISChannelVar"), lo = db.findColumn("CISChannelVarMin"),
                hi = db.findColumn("CISChannelVarMax");
     if (!var || !lo || !hi) return false;
-    for (std::size_t row = 0; row < db.rowCount(); ++row) {
+    for (const std::size_t row : selected) {
         if (db.cell(row, *var) != channel) continue;
         const double a = db.number(row, *lo), b = db.number(row, *hi);
         if (!std::isfinite(a) || !std::isfinite(b)) continue;
@@ -200,15 +214,20 @@ struct Request {
     std::string channel;
     bool positiveOnly = false;
     double clip = 0;
+    std::string selection;  // --where syntax; empty: every row
 };
 
-// The request as the cache file names it: the channel, and the clip when set.
+// The request as the cache file names it: the channel, the clip and the
+// selection when set (one line of text: no tab or newline).
 std::string cacheKey(const Request& q) {
-    if (q.clip <= 0) return q.channel;
     std::ostringstream key;
     key.precision(17);
-    key << q.channel << " clip=" << q.clip;
-    return key.str();
+    key << q.channel;
+    if (q.clip > 0) key << " clip=" << q.clip;
+    if (!q.selection.empty()) key << " where=" << q.selection;
+    std::string text = key.str();
+    std::replace_if(text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
+    return text;
 }
 
 // The range from the CIS columns, the cache file, or a scan (then cached).
@@ -216,10 +235,10 @@ DatabaseRange scanOrLookUp(const std::string& folder, const Request& q, const Pr
 
 }  // namespace
 
-DatabaseRange databaseRange(const std::string& source, const std::string& channel, bool positiveOnly, double clip,
-                            const std::function<void(double)>& progress) {
+DatabaseRange databaseRange(const std::string& source, const std::string& selection, const std::string& channel,
+                            bool positiveOnly, double clip, const std::function<void(double)>& progress) {
     const std::string folder = findDatabase(source);
-    const Request q{channel, positiveOnly, clip};
+    const Request q{channel, positiveOnly, clip, selection};
     const std::string key = folder + '\n' + cacheKey(q) + (positiveOnly ? "\nlog" : "\nlinear");
     const std::uint64_t csvStamp = mixStamp(kFnvBasis, (fs::path(folder) / "data.csv").string());
     {
@@ -286,14 +305,15 @@ DatabaseRange scanOrLookUp(const std::string& folder, const Request& q, const Pr
     DatabaseRange r;
     r.database = folder;
     const CinemaDatabase db = CinemaDatabase::open(r.database);
-    if (q.clip <= 0 && !q.positiveOnly && fromComposableColumns(db, q.channel, r)) return r;
-    const std::vector<std::size_t> rows = entryRows(db);
+    const std::set<std::size_t> selected = selectedRows(db, q.selection);
+    if (q.clip <= 0 && !q.positiveOnly && fromComposableColumns(db, selected, q.channel, r)) return r;
+    const std::vector<std::size_t> rows = entryRows(db, selected);
     const std::uint64_t stamp = stampOf(db, rows);
     const fs::path cache = cacheFile(db);
     if (!cache.empty() && cached(cache, stamp, cacheKey(q), q.positiveOnly, r)) return r;
     if (q.clip > 0) {
         // The minimum and maximum first (cached, or from the composable columns).
-        const DatabaseRange whole = scanOrLookUp(folder, {q.channel, q.positiveOnly, 0.0}, {});
+        const DatabaseRange whole = scanOrLookUp(folder, {q.channel, q.positiveOnly, 0.0, q.selection}, {});
         r = whole.found ? percentiles(db, rows, q, whole, progress) : whole;
     } else {
         forEachEntry(db, rows, progress, 0.0, 1.0,

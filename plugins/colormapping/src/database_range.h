@@ -24,12 +24,14 @@ struct DatabaseRange {
 
 // `source`: the product the image was read from (its metadata "source");
 // the database is the nearest folder above it holding a data.csv.
+// `selection`: the rows that count (--where syntax; CinemaReader's metadata
+// "cinema.selection", set by a --foreach --where run); empty = every row.
 // `positiveOnly` for a log scale. `clip` > 0: the clip-th and (100 - clip)-th
 // percentiles of every entry's values instead of the minimum and maximum
 // (a scan: the composable columns hold no percentiles; value_histogram.h).
 // `progress` gets 0..1 while scanning. Throws darkroom::Error naming what is
 // missing.
-DatabaseRange databaseRange(const std::string& source, const std::string& channel, bool positiveOnly, double clip,
-                            const std::function<void(double)>& progress = {});
+DatabaseRange databaseRange(const std::string& source, const std::string& selection, const std::string& channel,
+                            bool positiveOnly, double clip, const std::function<void(double)>& progress = {});
 
 }  // namespace darkroom

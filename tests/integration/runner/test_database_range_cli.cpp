@@ -35,13 +35,17 @@ std::string pipeline(const std::string& range) {
            "  - legend.image -> write.image\n";
 }
 
-std::vector<std::string> legends(const test::TempDir& dir, const std::string& range, const std::string& out) {
+std::vector<std::string> legends(const test::TempDir& dir, const std::string& range, const std::string& out,
+                                 const std::string& where = "") {
     test::writeText(dir.file(range + ".yaml"), pipeline(range));
-    const auto r = test::runDarkroom({"run", dir.file(range + ".yaml"), "--foreach", "read", "--output", dir.file(out)},
-                                     {"XDG_CACHE_HOME=" + dir.file("cache")});
+    std::vector<std::string> args{"run", dir.file(range + ".yaml"), "--foreach", "read", "--output", dir.file(out)};
+    if (!where.empty()) args.insert(args.end(), {"--where", where});
+    const auto r = test::runDarkroom(args, {"XDG_CACHE_HOME=" + dir.file("cache")});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     std::vector<std::string> files;
-    for (const char* t : {"1", "2", "3"}) files.push_back(test::readText(dir.file(out + "/legend_time=" + t + ".png")));
+    for (const char* t : {"1", "2", "3"})
+        if (fs::exists(dir.file(out + "/legend_time=" + t + ".png")))
+            files.push_back(test::readText(dir.file(out + "/legend_time=" + t + ".png")));
     return files;
 }
 
@@ -60,4 +64,18 @@ TEST(DatabaseRangeCli, EveryEntryOfAForeachRunGetsTheSameLegend) {
     ASSERT_FALSE(own[0].empty());
     EXPECT_NE(own[1], own[0]);
     EXPECT_NE(own[0], same[0]);
+}
+
+TEST(DatabaseRangeCli, AWhereSelectionIsTheRangeOfItsOwnEntries) {
+    test::TempDir dir;
+    test::writeTimeSeriesDatabase(dir.file("series.cdb"), {1.0, 2.0, 3.0});
+    writeImage(*test::makeImage(160, 120, {"R", "G", "B"}, [](int, int, int) { return 0.5f; }), dir.file("grey.exr"));
+    const auto all = legends(dir, "database", "all");
+    const auto firstTwo = legends(dir, "database", "first-two", "time < 3");
+    ASSERT_EQ(all.size(), 3u);
+    ASSERT_EQ(firstTwo.size(), 2u);  // only the selected entries were shaded
+    EXPECT_EQ(firstTwo[1], firstTwo[0]);  // one scale for the selection: [1, 2]
+    EXPECT_NE(firstTwo[0], all[0]);       // not the whole database's [1, 3]
+    // The same selection again is the same scale (remembered per selection).
+    EXPECT_EQ(legends(dir, "database", "again", "time < 3"), firstTwo);
 }
