@@ -120,27 +120,29 @@ void checkColumns(const SceneSeries& series, const SceneDescription& scene) {
                              "' is also a camera column; expected the series' columns to differ from the cameras'");
 }
 
-// The origin a resume compares: the first step's scene, reading every file of every step.
-SceneDescription seriesOrigin(SceneDescription scene, const SceneSeries& series) {
+// The origin a resume compares: the first step's scene, reading every file
+// of every step. Whichever step a process loaded first, its files are named
+// as the first step's, so that every rank records (and a resume compares)
+// the origin one process records.
+SceneDescription seriesOrigin(SceneDescription scene, const SceneSeries& series, const SeriesStep& step) {
     scene.scene.reset();
+    for (std::string& f : scene.inputFiles)
+        for (const auto& [object, file] : step.files)
+            if (f == file) f = series.steps.front().files.at(object);
     for (const std::string& f : series.files)
         if (std::find(scene.inputFiles.begin(), scene.inputFiles.end(), f) == scene.inputFiles.end())
             scene.inputFiles.push_back(f);
     return scene;
 }
 
-// The database (or this rank's staging database), opened at the first
-// entry captured. A rank's staging database is made afresh; on a resume it
-// first checks that the database it completes was begun from the same
-// scene and steps (its recorded origin), before anything is rendered.
-CinemaWriter& openOutput(const SceneCapture& r, const SceneSeries& series, const SceneDescription& scene,
-                         SeriesOutput& out) {
+// The database (or this rank's staging database, made afresh), opened at
+// the first entry captured.
+CinemaWriter& openOutput(const SceneCapture& r, const SceneSeries& series, const SeriesStep& step,
+                         const SceneDescription& scene, SeriesOutput& out) {
     if (out.writer) return *out.writer;
     std::map<std::string, std::string> attachments;
-    CinemaWriterOptions wo = writerOptions(r, seriesOrigin(scene, series), attachments);
+    CinemaWriterOptions wo = writerOptions(r, seriesOrigin(scene, series, step), attachments);
     if (out.staging) {
-        if (r.resume && std::filesystem::exists(std::filesystem::path(r.output) / "data.csv"))
-            CinemaWriter::check(r.output, wo);
         wo.overwrite = true;
         wo.resume = false;
     }
@@ -190,7 +192,7 @@ CaptureSummary captureStep(const SceneCapture& r, const SceneSeries& series, std
     }
     if (const std::string e = group.agreedError(error); !e.empty()) throw InputError(e);
 
-    settings.openDatabase = [&]() -> CinemaWriter& { return openOutput(r, series, scene, out); };
+    settings.openDatabase = [&]() -> CinemaWriter& { return openOutput(r, series, step, scene, out); };
     settings.request = scene.request;
     settings.primitiveOffsets = part.primitiveOffset;
     settings.cancel = r.cancel;
@@ -232,6 +234,14 @@ CaptureSummary captureSteps(const SceneCapture& r, const SceneSeries& series, co
         total.writeSeconds += summary.writeSeconds;
     }
     return total;
+}
+
+void checkResumedOrigin(const SceneCapture& r, const SceneSeries& series, const std::optional<Bounds>& framing) {
+    if (!r.resume || !std::filesystem::exists(std::filesystem::path(r.output) / "data.csv")) return;
+    const SeriesStep& first = series.steps.front();
+    const SceneDescription scene = loadSceneFile(r.scene, stepOptions(first, framing));
+    std::map<std::string, std::string> attachments;
+    CinemaWriter::check(r.output, writerOptions(r, seriesOrigin(scene, series, first), attachments));
 }
 
 bool shareSteps(const SceneSeries& series, const ProcessGroup& group) {

@@ -20,11 +20,13 @@ enum class Failure : char { None = '-', Input = 'I', Runtime = 'E', Cancelled = 
 
 // Before any step, on the lead: the database and the staging folder checked
 // and prepared; the entries a resume keeps, on every rank.
-std::set<std::string> prepare(const SceneCapture& r, ProcessGroup& group) {
+std::set<std::string> prepare(const SceneCapture& r, const SceneSeries& series, const std::optional<Bounds>& framing,
+                              ProcessGroup& group) {
     std::string error, kept;
     if (group.lead()) {
         try {
             prepareSeriesStaging(r);
+            checkResumedOrigin(r, series, framing);
             for (const std::string& name : seriesEntriesKept(r)) kept += name + "\n";
         } catch (const Error& e) {
             error = e.what();
@@ -101,7 +103,7 @@ CaptureSummary captureSharedSteps(const SceneCapture& r, const SceneSeries& seri
                                   const std::optional<Bounds>& framing, const Registry& registry, Context& ctx,
                                   ProcessGroup& group) {
     SeriesOutput out;
-    out.kept = prepare(r, group);
+    out.kept = prepare(r, series, framing, group);
     out.path = seriesStagingDatabase(r, group.rank());
     out.staging = true;
     out.reportProgress = group.lead();

@@ -36,6 +36,12 @@ CaptureSummary captureSteps(const SceneCapture& r, const SceneSeries& series, co
                             const Registry& registry, Context& ctx, ProcessGroup& group, const NextStep& next,
                             SeriesOutput& out);
 
+// On a resume of an existing database: throws (darkroom::Error) when it was
+// begun from another scene or other steps (its recorded origin), loading
+// the first step for its description. The ranks sharing the steps write
+// staging databases, so the lead checks this once before any step.
+void checkResumedOrigin(const SceneCapture& r, const SceneSeries& series, const std::optional<Bounds>& framing);
+
 // Whether the ranks of `group` share the steps (each captures whole steps)
 // rather than every rank holding a part of every step: `series: {ranks:}`,
 // by default when there are at least as many steps as ranks.
