@@ -2,8 +2,9 @@
 // (darkroom/scene/time_series.h): ONE database, rows = steps x cameras, the
 // series' columns (`time`, or a source database's) before the cameras'.
 //
-// Steps are loaded one at a time (this process's part of it over several
-// processes), captured through the same loop as a static scene
+// Steps are loaded one at a time (whole, or this process's part of it when
+// the ranks partition each step; series_ranks.cpp when they share the
+// steps instead), captured through the same loop as a static scene
 // (captureEntries), and dropped before the next, so memory is bounded by one
 // step. Cameras stay put: unless the scene asks for `framing: step`, a first
 // pass loads each step once (the processes sharing the steps) for the union
