@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace darkroom::test {
 namespace {
@@ -172,11 +175,9 @@ TEST(CaptureOverRanks, ABadSceneFailsOnEveryRankWithOneMessage) {
     EXPECT_EQ(r.err.find("representation must be", first + 1), std::string::npos) << r.err;
 }
 
-// A time series (issue 29): the ranks share the first pass over the steps
-// (their bounds), then capture each step as a static scene, each holding
-// its part; the database equals one process's, byte for byte.
-TEST(CaptureOverRanks, ATimeSeriesWritesTheSingleProcessDatabase) {
-    TempDir dir;
+// A .pvd series of 5 growing steps and a static object, the scene file
+// with `extra` appended.
+void writeSeries(const TempDir& dir, const std::string& extra = "") {
     const VtpPiece field = merged(heightFieldPieces(17, 21, 5));
     std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n<Collection>\n";
     for (int k = 0; k < 5; ++k) {
@@ -189,14 +190,120 @@ TEST(CaptureOverRanks, ATimeSeriesWritesTheSingleProcessDatabase) {
     writeText(dir.file("scene.yaml"),
               "objects:\n  - file: series.pvd\n  - generator: particles\n    parameters: {count: 400}\n"
               "cameras:\n  resolution: [40, 32]\n  grid: {phi: [0, 120], theta: [0, 60]}\n"
-              "channels:\n  scalars: [height]\n  objectId: true\n  primitiveId: true\n");
+              "channels:\n  scalars: [height]\n  objectId: true\n  primitiveId: true\n" + extra);
+}
+
+// The steps each rank says it captured whole ("darkroom: rank K captured
+// the steps time=0, time=3"), by rank; none when the ranks partitioned them.
+std::vector<std::vector<std::string>> stepsByRank(const std::string& err, int ranks) {
+    std::vector<std::vector<std::string>> out;
+    for (int k = 0; k < ranks; ++k) {
+        const std::string prefix = "darkroom: rank " + std::to_string(k) + " captured ";
+        const auto at = err.find(prefix);
+        if (at == std::string::npos) return {};
+        std::string line = err.substr(at + prefix.size(), err.find('\n', at) - at - prefix.size());
+        out.emplace_back();
+        if (line.rfind("the steps ", 0) != 0) continue;  // "no step"
+        line = line.substr(10);
+        for (std::size_t p = 0; p != std::string::npos;) {
+            const std::size_t comma = line.find(", ", p);
+            out.back().push_back(line.substr(p, comma == std::string::npos ? comma : comma - p));
+            p = comma == std::string::npos ? comma : comma + 2;
+        }
+    }
+    return out;
+}
+
+// A time series (issue 29) with as many steps as ranks or more: each rank
+// captures whole steps of its own (no compositing), the lead merges them; the
+// database equals one process's, byte for byte.
+TEST(CaptureOverRanks, ATimeSeriesWritesTheSingleProcessDatabase) {
+    TempDir dir;
+    writeSeries(dir);
     const RunResult one = runAlone({"capture", dir.file("scene.yaml"), "-o", dir.file("one.cdb"), "-q"});
     ASSERT_EQ(one.exitCode, 0) << one.err;
-    const RunResult many = runOnRanks(3, {"capture", dir.file("scene.yaml"), "-o", dir.file("many.cdb"), "-q"});
+    const RunResult many = runOnRanks(3, {"capture", dir.file("scene.yaml"), "-o", dir.file("many.cdb")});
     ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
     EXPECT_EQ(compareFolders(dir.file("one.cdb"), dir.file("many.cdb")), "");
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("one.cdb")), {}), 2 + 5 * 4);
     EXPECT_NE(readText(dir.file("many.cdb/data.csv")).find("time,phi,theta,FILE"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("many.cdb.staging")));
+    EXPECT_NE(many.err.find("20 entries rendered over 3 ranks"), std::string::npos) << many.err;
+    // Every step captured whole by exactly one rank.
+    const auto steps = stepsByRank(many.err, 3);
+    ASSERT_EQ(steps.size(), 3u) << many.err;
+    std::multiset<std::string> all;
+    for (const auto& mine : steps) all.insert(mine.begin(), mine.end());
+    EXPECT_EQ(all, (std::multiset<std::string>{"time=0", "time=1", "time=2", "time=3", "time=4"})) << many.err;
+}
+
+// `series: {ranks: partition}` (or fewer steps than ranks): every rank holds
+// a part of every step, composited; the same database.
+TEST(CaptureOverRanks, ATimeSeriesPartitionedOverRanksWritesTheSingleProcessDatabase) {
+    TempDir dir;
+    writeSeries(dir, "series: {ranks: partition}\n");
+    const RunResult one = runAlone({"capture", dir.file("scene.yaml"), "-o", dir.file("one.cdb"), "-q"});
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    const RunResult many = runOnRanks(3, {"capture", dir.file("scene.yaml"), "-o", dir.file("many.cdb")});
+    ASSERT_EQ(many.exitCode, 0) << many.err << many.out;
+    EXPECT_EQ(compareFolders(dir.file("one.cdb"), dir.file("many.cdb")), "");
+    EXPECT_TRUE(stepsByRank(many.err, 3).empty()) << many.err;
+}
+
+TEST(CaptureOverRanks, ABadSeriesRanksValueIsRefusedNamingTheLine) {
+    TempDir dir;
+    writeSeries(dir, "series: {ranks: some}\n");
+    const RunResult r = runOnRanks(2, {"capture", dir.file("scene.yaml"), "-o", dir.file("db.cdb")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("scene.yaml:12:17: ranks must be auto"), std::string::npos) << r.err;
+}
+
+// What a killed capture over ranks leaves (the staging databases, no
+// database yet) is refused without --resume, and completed by --resume:
+// only the missing entries are rendered, and the database is one process's.
+TEST(CaptureOverRanks, AResumeCompletesAnInterruptedTimeSeriesCaptureOverRanks) {
+    namespace fs = std::filesystem;
+    TempDir dir;
+    writeSeries(dir);
+    const std::string scene = dir.file("scene.yaml");
+    ASSERT_EQ(runAlone({"capture", scene, "-o", dir.file("one.cdb"), "-q"}).exitCode, 0);
+    // Rank 1 finished time=1 and time=3; rank 0 was killed half-way through
+    // time=0 (two products of four written); time=2 and time=4 not begun.
+    const std::string staging = dir.file("many.cdb.staging");
+    fs::create_directories(staging);
+    writeText(staging + "/.darkroom-staging", "");
+    fs::copy(dir.file("one.cdb"), staging + "/rank-1");
+    fs::copy(dir.file("one.cdb"), staging + "/rank-0");
+    for (const auto& e : fs::directory_iterator(staging + "/rank-1")) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("time=", 0) == 0 && name.rfind("time=1_", 0) != 0 && name.rfind("time=3_", 0) != 0)
+            fs::remove(e.path());
+    }
+    for (const auto& e : fs::directory_iterator(staging + "/rank-0")) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("time=", 0) == 0 && name != "time=0_phi=0_theta=0.exr" && name != "time=0_phi=0_theta=60.exr")
+            fs::remove(e.path());
+    }
+
+    const RunResult refused = runOnRanks(3, {"capture", scene, "-o", dir.file("many.cdb")});
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    const std::string message = "left 10 entries staged in " + staging;
+    const auto first = refused.err.find(message);
+    ASSERT_NE(first, std::string::npos) << refused.err;
+    EXPECT_EQ(refused.err.find(message, first + 1), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir.file("many.cdb")));
+
+    const RunResult resumed = runOnRanks(3, {"capture", scene, "-o", dir.file("many.cdb"), "--resume"});
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("10 entries rendered over 3 ranks, 10 kept from the interrupted capture"),
+              std::string::npos)
+        << resumed.err;
+    // The steps rendered again are the unfinished ones, each by one rank.
+    std::multiset<std::string> captured;
+    for (const auto& mine : stepsByRank(resumed.err, 3)) captured.insert(mine.begin(), mine.end());
+    EXPECT_EQ(captured, (std::multiset<std::string>{"time=0", "time=2", "time=4"})) << resumed.err;
+    EXPECT_EQ(compareFolders(dir.file("one.cdb"), dir.file("many.cdb")), "");
+    EXPECT_FALSE(fs::exists(staging));
 }
 
 }  // namespace

@@ -28,6 +28,10 @@ void printSummary(const std::string& output, const workflows::CaptureSummary& s,
                    "compositing {:.2f} s (slowest rank), writing {:.2f} s)\n",
                    output, s.rendered, processes, kept, seconds, s.renderSeconds, s.compositeSeconds,
                    s.writeSeconds);
+    // A time series whose steps the ranks shared: which rank captured which steps whole.
+    for (std::size_t k = 0; k < s.stepsPerRank.size(); ++k)
+        fmt::print(stderr, "darkroom: rank {} captured {}\n", k,
+                   s.stepsPerRank[k].empty() ? std::string("no step") : "the steps " + s.stepsPerRank[k]);
 }
 
 int capture(const GlobalOptions& global, workflows::SceneCapture request) {

@@ -56,7 +56,8 @@ public:
         d.path = source_;
         d.scene = std::make_shared<Scene>();
         if (!root.IsMap()) fail(root, "expected a map with 'objects', 'cameras' and 'channels'");
-        checkKeys(root, {"version", "objects", "cameras", "channels", "backend"}, "the scene file");
+        checkKeys(root, {"version", "objects", "cameras", "channels", "backend", "series"}, "the scene file");
+        seriesKey(root["series"]);
         if (root["version"] && number(root["version"], "version") != 1.0) fail(root["version"], "unsupported version, expected 1");
         const YAML::Node objects = root["objects"];
         if (!objects) fail(root, "missing 'objects' (a list of objects to draw)");
@@ -100,6 +101,21 @@ private:
                                    (near.empty() ? std::string() : "; did you mean '" + near + "'?") + " (expected " +
                                    list + ")");
             }
+        }
+    }
+
+    // `series: {ranks: auto | steps | partition}`: how mpirun shares a time
+    // series (time_series.h); checked here too, so a scene without a series
+    // is told of a bad value as well.
+    void seriesKey(const YAML::Node& n) const {
+        if (!n) return;
+        if (!n.IsMap()) fail(n, "'series' must be a map (ranks)");
+        checkKeys(n, {"ranks"}, "series");
+        if (const YAML::Node r = n["ranks"]) {
+            const std::string v = text(r, "ranks");
+            if (v != "auto" && v != "steps" && v != "partition")
+                fail(r, "ranks must be auto, steps (each rank captures whole steps of a time series) or partition "
+                        "(every rank holds a part of every step)");
         }
     }
 

@@ -2,20 +2,24 @@
 // (darkroom/scene/time_series.h): ONE database, rows = steps x cameras, the
 // series' columns (`time`, or a source database's) before the cameras'.
 //
-// Steps are loaded one at a time (this process's part of it over several
-// processes), captured through the same loop as a static scene
+// Steps are loaded one at a time (whole, or this process's part of it when
+// the ranks partition each step; series_ranks.cpp when they share the
+// steps instead), captured through the same loop as a static scene
 // (captureEntries), and dropped before the next, so memory is bounded by one
 // step. Cameras stay put: unless the scene asks for `framing: step`, a first
 // pass loads each step once (the processes sharing the steps) for the union
 // of their bounds, on which every step is then framed — a movie over time
 // that reframes each step zooms in and out as the data grows and shrinks.
-#include "scene_capture_steps.h"
+#include "series_steps.h"
+
+#include <darkroom/data/cinema/naming.h>
 
 #include <darkroom/error.h>
 #include <darkroom/core/registry.h>
 #include <darkroom/core/run_filter.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cstdio>
 #include <sstream>
 
@@ -77,18 +81,34 @@ std::vector<CaptureEntry> stepEntries(const SceneSeries& series, const SeriesSte
     return entries;
 }
 
-// Whether the database (open on the lead) holds every row of a step, agreed.
-bool stepComplete(const CinemaWriter* writer, const std::vector<CaptureEntry>& cameraRows, const SceneSeries& series,
-                  const SeriesStep& step, ProcessGroup& group) {
-    std::string complete = "0";
-    if (writer) {
-        complete = "1";
-        for (CaptureEntry e : cameraRows) {
-            for (std::size_t c = 0; c < series.columns.size(); ++c)
-                e.parameters.insert_or_assign(series.columns[c], step.values[c]);
-            if (!writer->hasEntry(e.parameters)) complete = "0";
-        }
-    }
+// The name of an entry's files, in the database's column order (the
+// series' columns, then the cameras'), as a resume lists what it keeps.
+std::string entryName(const CinemaParameters& parameters, const SceneSeries& series) {
+    std::vector<std::pair<std::string, std::string>> named;
+    for (const std::string& c : series.columns) named.emplace_back(c, parameters.at(c).str());
+    for (const auto& [k, v] : parameters)
+        if (std::find(series.columns.begin(), series.columns.end(), k) == series.columns.end())
+            named.emplace_back(k, v.str());
+    return cinemaEntryName(named);
+}
+
+// The rows of a step a resume keeps: in the database open on the lead, or
+// among `kept` (the database's, when the ranks share the steps).
+std::size_t keptRows(const std::vector<CaptureEntry>& rows, const SeriesOutput& out, const SceneSeries& series) {
+    std::size_t kept = 0;
+    for (const CaptureEntry& e : rows)
+        if ((out.writer && out.writer->hasEntry(e.parameters)) || out.kept.count(entryName(e.parameters, series)))
+            ++kept;
+    return kept;
+}
+
+// Whether the database holds every row of a step, agreed.
+bool stepComplete(const SeriesOutput& out, const SceneSeries& series, const SeriesStep& step, ProcessGroup& group) {
+    std::vector<CaptureEntry> rows = out.cameraRows;
+    for (CaptureEntry& e : rows)
+        for (std::size_t c = 0; c < series.columns.size(); ++c)
+            e.parameters.insert_or_assign(series.columns[c], step.values[c]);
+    std::string complete = group.lead() && keptRows(rows, out, series) == rows.size() ? "1" : "0";
     group.broadcast(complete);
     return complete == "1";
 }
@@ -101,30 +121,58 @@ void checkColumns(const SceneSeries& series, const SceneDescription& scene) {
                              "' is also a camera column; expected the series' columns to differ from the cameras'");
 }
 
-// The origin a resume compares: the first step's scene, reading every file of every step.
-SceneDescription seriesOrigin(SceneDescription scene, const SceneSeries& series) {
+// The origin a resume compares: the first step's scene, reading every file
+// of every step. Whichever step a process loaded first, its files are named
+// as the first step's, so that every rank records (and a resume compares)
+// the origin one process records.
+SceneDescription seriesOrigin(SceneDescription scene, const SceneSeries& series, const SeriesStep& step) {
     scene.scene.reset();
+    for (std::string& f : scene.inputFiles)
+        for (const auto& [object, file] : step.files)
+            if (f == file) f = series.steps.front().files.at(object);
     for (const std::string& f : series.files)
         if (std::find(scene.inputFiles.begin(), scene.inputFiles.end(), f) == scene.inputFiles.end())
             scene.inputFiles.push_back(f);
     return scene;
 }
 
-// Where one step's capture writes: the database, opened by the lead at the
-// first step loaded (its columns and origin are known then), and the rows
-// of a step without the series' columns.
-struct SeriesOutput {
-    std::unique_ptr<CinemaWriter> writer;
-    std::vector<CaptureEntry> cameraRows;
-};
+// The database (or this rank's staging database, made afresh), opened at
+// the first entry captured.
+CinemaWriter& openOutput(const SceneCapture& r, const SceneSeries& series, const SeriesStep& step,
+                         const SceneDescription& scene, SeriesOutput& out) {
+    if (out.writer) return *out.writer;
+    std::map<std::string, std::string> attachments;
+    CinemaWriterOptions wo = writerOptions(r, seriesOrigin(scene, series, step), attachments);
+    if (out.staging) {
+        wo.overwrite = true;
+        wo.resume = false;
+    }
+    std::vector<std::string> columns = series.columns;
+    for (const auto& [k, v] : scene.cameras.front().parameters) columns.push_back(k);
+    out.writer = std::make_unique<CinemaWriter>(out.path, columns, wo);
+    return *out.writer;
+}
 
-// Loads step `s` (this process's part), captures its cameras through
-// captureEntries and drops it again.
+// The rows of a step still to capture: those a resume keeps (the shared
+// steps' `kept`) left out and counted.
+std::vector<CaptureEntry> rowsToCapture(std::vector<CaptureEntry> rows, const SeriesOutput& out,
+                                        const SceneSeries& series, std::size_t& kept) {
+    if (out.kept.empty()) return rows;
+    const std::size_t before = rows.size();
+    rows.erase(std::remove_if(rows.begin(), rows.end(),
+                              [&](const CaptureEntry& e) { return out.kept.count(entryName(e.parameters, series)); }),
+               rows.end());
+    kept = before - rows.size();
+    return rows;
+}
+
+// Loads step `s` (this process's part, or the whole step when it captures
+// it alone), captures its cameras through captureEntries and drops it again.
 CaptureSummary captureStep(const SceneCapture& r, const SceneSeries& series, std::size_t s,
                            const std::optional<Bounds>& framing, const Registry& registry, Context& ctx,
                            ProcessGroup& group, SeriesOutput& out) {
     const SeriesStep& step = series.steps[s];
-    if (group.lead() && r.progress) r.progress(double(s) / double(series.steps.size()), "loading " + step.label);
+    if (out.reportProgress && r.progress) r.progress(double(s) / double(series.steps.size()), "loading " + step.label);
     const PartitionedScene part = loadScene(r.scene, group, stepOptions(step, framing));
     const SceneDescription& scene = part.description;
     if (r.warn)
@@ -145,20 +193,11 @@ CaptureSummary captureStep(const SceneCapture& r, const SceneSeries& series, std
     }
     if (const std::string e = group.agreedError(error); !e.empty()) throw InputError(e);
 
-    settings.openDatabase = [&]() -> CinemaWriter& {
-        if (!out.writer) {
-            std::map<std::string, std::string> attachments;
-            const CinemaWriterOptions wo = writerOptions(r, seriesOrigin(scene, series), attachments);
-            std::vector<std::string> columns = series.columns;
-            for (const auto& [k, v] : scene.cameras.front().parameters) columns.push_back(k);
-            out.writer = std::make_unique<CinemaWriter>(r.output, columns, wo);
-        }
-        return *out.writer;
-    };
+    settings.openDatabase = [&]() -> CinemaWriter& { return openOutput(r, series, step, scene, out); };
     settings.request = scene.request;
     settings.primitiveOffsets = part.primitiveOffset;
     settings.cancel = r.cancel;
-    if (r.progress)
+    if (r.progress && out.reportProgress)
         settings.progress = [&](double f, const std::string& label) {
             r.progress((double(s) + f) / double(series.steps.size()), label);
         };
@@ -166,10 +205,56 @@ CaptureSummary captureStep(const SceneCapture& r, const SceneSeries& series, std
         return backend->render(camera, request, ctx);
     };
     out.cameraRows = captureEntriesOf(scene);
-    return captureEntries(stepEntries(series, step, scene), render, group, settings);
+    CaptureSummary summary;
+    const std::vector<CaptureEntry> rows = rowsToCapture(stepEntries(series, step, scene), out, series, summary.kept);
+    if (rows.empty()) return summary;
+    const std::size_t kept = summary.kept;
+    summary = captureEntries(rows, render, group, settings);
+    summary.kept += kept;
+    out.captured.push_back(step.label);
+    return summary;
 }
 
 }  // namespace
+
+CaptureSummary captureSteps(const SceneCapture& r, const SceneSeries& series, const std::optional<Bounds>& framing,
+                            const Registry& registry, Context& ctx, ProcessGroup& group, const NextStep& next,
+                            SeriesOutput& out) {
+    CaptureSummary total;
+    while (const std::optional<std::size_t> s = next()) {
+        // Once a step was loaded, a resume skips the steps the database holds whole without loading them.
+        if (!out.cameraRows.empty() && stepComplete(out, series, series.steps[*s], group)) {
+            total.kept += out.cameraRows.size();
+            continue;
+        }
+        const CaptureSummary summary = captureStep(r, series, *s, framing, registry, ctx, group, out);
+        total.rendered += summary.rendered;
+        total.kept += summary.kept;
+        total.renderSeconds += summary.renderSeconds;
+        total.compositeSeconds += summary.compositeSeconds;
+        total.writeSeconds += summary.writeSeconds;
+    }
+    return total;
+}
+
+void checkResumedOrigin(const SceneCapture& r, const SceneSeries& series, const std::optional<Bounds>& framing) {
+    if (!r.resume || !std::filesystem::exists(std::filesystem::path(r.output) / "data.csv")) return;
+    const SeriesStep& first = series.steps.front();
+    const SceneDescription scene = loadSceneFile(r.scene, stepOptions(first, framing));
+    std::map<std::string, std::string> attachments;
+    CinemaWriter::check(r.output, writerOptions(r, seriesOrigin(scene, series, first), attachments));
+}
+
+bool shareSteps(const SceneSeries& series, const ProcessGroup& group) {
+    if (group.size() == 1) return false;
+    switch (series.ranks) {
+        case SeriesRanks::Steps: return true;
+        case SeriesRanks::Partition: return false;
+        case SeriesRanks::Auto: break;
+    }
+    // Fewer steps than ranks would leave ranks idle: they share each step's primitives instead.
+    return series.steps.size() >= std::size_t(group.size());
+}
 
 CaptureSummary captureSceneSeries(const SceneCapture& r, const SceneSeries& series, const Registry& registry,
                                   ProcessGroup& group) {
@@ -179,24 +264,18 @@ CaptureSummary captureSceneSeries(const SceneCapture& r, const SceneSeries& seri
     ro.threads = threadsPerProcess(r, group);
     ro.registry = &registry;
     const std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
+    if (shareSteps(series, group)) return captureSharedSteps(r, series, framing, registry, *ctx, group);
 
+    // Every process takes part in every step, in order.
     SeriesOutput out;
-    CaptureSummary total;
-    const std::size_t count = series.steps.size();
-    for (std::size_t s = 0; s < count; ++s) {
-        const SeriesStep& step = series.steps[s];
-        // Once the database is open, a resume skips the steps it holds whole without loading them.
-        if (!out.cameraRows.empty() && stepComplete(out.writer.get(), out.cameraRows, series, step, group)) {
-            total.kept += out.cameraRows.size();
-            continue;
-        }
-        const CaptureSummary summary = captureStep(r, series, s, framing, registry, *ctx, group, out);
-        total.rendered += summary.rendered;
-        total.kept += summary.kept;
-        total.renderSeconds += summary.renderSeconds;
-        total.compositeSeconds += summary.compositeSeconds;
-        total.writeSeconds += summary.writeSeconds;
-    }
+    out.path = r.output;
+    out.reportProgress = group.lead();
+    std::size_t s = 0;
+    const NextStep next = [&]() -> std::optional<std::size_t> {
+        if (s == series.steps.size()) return std::nullopt;
+        return s++;
+    };
+    const CaptureSummary total = captureSteps(r, series, framing, registry, *ctx, group, next, out);
     if (out.writer) out.writer->finish();
     return total;
 }

@@ -121,6 +121,21 @@ bool framePerStep(const YAML::Node& root, const std::string& source) {
     return v == "step";
 }
 
+// `series: {ranks: auto | steps | partition}`.
+SeriesRanks seriesRanks(const YAML::Node& root, const std::string& source) {
+    const YAML::Node s = root["series"];
+    if (!s || !s.IsMap() || !s["ranks"]) return SeriesRanks::Auto;
+    const YAML::Node f = s["ranks"];
+    const std::string v = f.IsScalar() ? f.Scalar() : std::string();
+    if (v == "steps") return SeriesRanks::Steps;
+    if (v == "partition") return SeriesRanks::Partition;
+    if (v != "auto")
+        throw InputError(where(source, f) + ": ranks must be auto (the default: each rank captures whole steps " +
+                         "when there are at least as many steps as ranks), steps (each rank captures whole steps) " +
+                         "or partition (every rank holds a part of every step)");
+    return SeriesRanks::Auto;
+}
+
 std::vector<SeriesStep> matchedSteps(const std::vector<Scanned>& all, const Scanned& leader,
                                      const std::vector<std::string>& columns) {
     std::vector<SeriesStep> steps;
@@ -171,6 +186,7 @@ SceneSeries scanSceneSeries(const std::string& sceneFile) {
     out.columns = leader->steps.columns.empty() ? std::vector<std::string>{"time"} : leader->steps.columns;
     out.steps = matchedSteps(all, *leader, out.columns);
     out.framePerStep = framePerStep(root, sceneFile);
+    out.ranks = seriesRanks(root, sceneFile);
     for (const Scanned& s : all)
         for (const auto& item : s.steps.items)
             if (std::find(out.files.begin(), out.files.end(), item.file) == out.files.end())

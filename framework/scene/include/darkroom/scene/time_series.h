@@ -26,6 +26,13 @@ struct SeriesStep {
     std::string label;  // "time=0.5", for progress and messages
 };
 
+// How `mpirun -np N darkroom capture` shares a series (`series: {ranks: ...}`):
+// Steps, each rank captures whole steps of its own into a staging database
+// merged at the end; Partition, every rank holds a part of every step (for
+// steps too big for one rank); Auto, Steps when there are at least as many
+// steps as ranks, else Partition.
+enum class SeriesRanks { Auto, Steps, Partition };
+
 struct SceneSeries {
     // `time`, or the parameter columns of a series that is a Cinema database.
     std::vector<std::string> columns;
@@ -34,6 +41,7 @@ struct SceneSeries {
     // default (`framing: series`) cameras are framed once, on the union of
     // every step's bounds, so they stay put across the series.
     bool framePerStep = false;
+    SeriesRanks ranks = SeriesRanks::Auto;
     // Every file the series name (each once), for what a resume compares.
     std::vector<std::string> files;
 };

@@ -72,6 +72,10 @@ struct CaptureSummary {
     double renderSeconds = 0;     // the slowest process's ray tracing
     double compositeSeconds = 0;  // the slowest process's compositing (several processes)
     double writeSeconds = 0;      // the lead's writing
+    // A time series whose steps the ranks shared (docs/scene-format.md,
+    // "Time series"): per rank, the labels of the steps it captured whole
+    // ("time=0, time=3"); empty when every process took part in every step.
+    std::vector<std::string> stepsPerRank;
 };
 
 // Renders every entry the database lacks and adds it. The caller finishes
