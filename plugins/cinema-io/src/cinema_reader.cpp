@@ -87,7 +87,7 @@ void CinemaReader::execute(Context& ctx) {
     for (const auto& n : notes) ctx.warn(n.where + ": " + n.message);
     // What "the whole database" means downstream (ColorMapping's range).
     if (const std::string& selection = ctx.get(selection_); !selection.empty())
-        image->metadata().attributes["cinema.selection"] = selection;
+        image->metadata().attributes["run.selection"] = selection;
     ctx.progress(1.0);
     ctx.set(result_, image);
     ctx.set(row_, Value(cinemaRow(*db, rowRead)));

@@ -173,7 +173,7 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
     ScalarRange r;
     if (mode == Range::Database) {
         const auto& attributes = in.metadata().attributes;
-        const auto source = attributes.find("source"), selection = attributes.find("cinema.selection");
+        const auto source = attributes.find("source"), selection = attributes.find("run.selection");
         const DatabaseRange d = databaseRange(source == attributes.end() ? "" : source->second,
                                               selection == attributes.end() ? "" : selection->second, channel,
                                               logScale, clip, [&ctx](double f) { ctx.progress(0.5 * f); });

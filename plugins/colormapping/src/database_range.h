@@ -25,7 +25,7 @@ struct DatabaseRange {
 // `source`: the product the image was read from (its metadata "source");
 // the database is the nearest folder above it holding a data.csv.
 // `selection`: the rows that count (--where syntax; CinemaReader's metadata
-// "cinema.selection", set by a --foreach --where run); empty = every row.
+// "run.selection", set by a --foreach --where run); empty = every row.
 // `positiveOnly` for a log scale. `clip` > 0: the clip-th and (100 - clip)-th
 // percentiles of every entry's values instead of the minimum and maximum
 // (a scan: the composable columns hold no percentiles; value_histogram.h).

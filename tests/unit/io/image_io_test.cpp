@@ -85,6 +85,17 @@ TEST(ImageIo, ExrRoundTripIsBitExactWithCameraAttributesAndChannelOrder) {
     expectNoTemporaries(dir.path());
 }
 
+TEST(ImageIo, AttributesOfTheRunAreNotStored) {
+    // "run.*" describes the run (the rows a --foreach --where covers), not
+    // the picture: a file must not differ with the run that wrote it.
+    test::TempDir dir;
+    auto b = awkwardImage();
+    const auto kept = b->metadata().attributes;
+    b->metadata().attributes["run.selection"] = "theta=40";
+    writeImage(*b, dir.file("entry.exr"));
+    EXPECT_EQ(readImage(dir.file("entry.exr"))->metadata().attributes, kept);
+}
+
 TEST(ImageIo, EveryLosslessCompressionRoundTripsExactly) {
     test::TempDir dir;
     const auto b = awkwardImage();

@@ -2,6 +2,7 @@
 // images"): built in memory with HDF5's core driver, then written atomically.
 #include "h5_handle.h"
 #include "h5_image.h"
+#include "../io/stored_attributes.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
@@ -145,7 +146,7 @@ void writeMeta(hid_t meta, const Buffer& image, std::optional<std::pair<double, 
         written.push_back(name);
     }
     for (const auto& [key, text] : image.metadata().attributes)
-        if (const std::string name = datasetName(key); free(name)) {
+        if (const std::string name = datasetName(key); isStoredAttribute(key) && free(name)) {
             addText(meta, name, text);
             written.push_back(name);
         }

@@ -1,5 +1,7 @@
 #include "exr_metadata.h"
 
+#include "stored_attributes.h"
+
 #include <darkroom/error.h>
 #include <darkroom/port.h>
 #include <darkroom/value.h>
@@ -72,7 +74,8 @@ void putMetadata(const BufferMetadata& meta, const std::vector<std::string>& cha
         header.insert(kCamera + "width", Imf::IntAttribute(c.width));
         header.insert(kCamera + "height", Imf::IntAttribute(c.height));
     }
-    for (const auto& [key, value] : meta.attributes) header.insert(kAttr + key, Imf::StringAttribute(value));
+    for (const auto& [key, value] : meta.attributes)
+        if (isStoredAttribute(key)) header.insert(kAttr + key, Imf::StringAttribute(value));
     std::string order;
     for (const auto& n : channelOrder) order += (order.empty() ? "" : ",") + n;
     header.insert(kChannels, Imf::StringAttribute(order));
