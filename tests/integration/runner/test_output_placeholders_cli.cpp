@@ -76,7 +76,7 @@ TEST(OutputPlaceholders, TwoEntriesGivenOneFileAreRefusedBeforeAnyIsWritten) {
         w.finish();
     }
     const auto r = runWith(dir, "frames/{time}.exr");
-    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("would both be written to"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir.file("out/frames/1.exr")));
 }
