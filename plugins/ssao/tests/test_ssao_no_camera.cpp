@@ -7,6 +7,8 @@
 
 #include <darkroom/depth_input.h>
 #include <darkroom/error.h>
+#include <darkroom/core/evaluator.h>
+#include <darkroom/core/graph.h>
 #include <darkroom/core/run_filter.h>
 
 #include <gmock/gmock.h>
@@ -47,7 +49,43 @@ float valley(int x, float scale, float offset) {
     return offset + scale * (0.5f - std::abs(float(x) + 0.5f - 32.0f) * u);
 }
 
+// Pearson's correlation of a and b over the pixels with finite depth and values.
+double correlation(const Buffer& image, const char* a, const char* b) {
+    const float *x = image.requireFloat(a), *y = image.requireFloat(b), *z = image.requireFloat("Z");
+    double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        if (!std::isfinite(z[i]) || !std::isfinite(x[i]) || !std::isfinite(y[i])) continue;
+        n += 1, sx += x[i], sy += y[i], sxx += double(x[i]) * x[i], syy += double(y[i]) * y[i], sxy += double(x[i]) * y[i];
+    }
+    const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+    return cov / std::sqrt(vx * vy);
+}
+
 }  // namespace
+
+// TTK stored its own screen-space occlusion (SSSAO) beside each picture of
+// the shared database, computed with the camera it had. Ours, with the
+// assumed image-space camera, follows it (Pearson 0.67 and 0.52 measured on
+// the two objects); reading the same depth as raw does not (0.27, 0.34): a
+// check that the assumption is TTK's, on data no one here wrote.
+TEST(SsaoWithoutCamera, FollowsTheOcclusionTtkStoredWithItsPictures) {
+    const std::string db = test::sharedData("cinema/ttk_extracts_001.cdb");
+    if (db.empty()) GTEST_SKIP() << "../shared/data/cinema is absent";
+    for (const std::string object : {"000", "012"}) {
+        Graph g(test::pluginRegistry());
+        g.addNode("read", "CinemaReader");
+        g.addNode("ao", "SSAO");
+        g.setParameter("read", "database", Value(db));
+        g.setParameter("read", "parameters", Value("object=" + object));
+        g.connect({"read", "image"}, {"ao", "image"});
+        Evaluator ev;
+        const double assumed = correlation(*ev.evaluate(g, "ao", "image").asImage(), "AO", "SSSAO");
+        g.setParameter("ao", "depthWithoutCamera", Value(std::string("raw")));
+        const double raw = correlation(*ev.evaluate(g, "ao", "image").asImage(), "AO", "SSSAO");
+        EXPECT_GT(assumed, 0.45) << "object " << object;
+        EXPECT_GT(assumed - raw, 0.15) << "object " << object << ": raw " << raw;
+    }
+}
 
 TEST(SsaoWithoutCamera, APlaneIsUnoccludedAndACreaseIsOccluded) {
     const auto plane = depthImage([](int x, int y) { return 0.2f + 0.004f * float(x) + 0.002f * float(y); });
