@@ -7,9 +7,12 @@
 #include <ImfThreading.h>
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
+
 #include <unistd.h>
 
 namespace {
@@ -57,6 +60,13 @@ void BM_ExrRead(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(darkroom::readImage(path));
     state.counters["threads"] = double(state.range(0));
 }
-BENCHMARK(BM_ExrRead)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+BENCHMARK(BM_ExrRead)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->ComputeStatistics("min", minimum);  // the least disturbed by a shared machine's load
 
 }  // namespace
