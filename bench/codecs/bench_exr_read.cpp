@@ -25,19 +25,19 @@ struct ExrFile {
     ExrFile() {
         path = (fs::temp_directory_path() / ("darkroom_bench_exr_" + std::to_string(::getpid()) + ".exr")).string();
         const int n = 2048;
-        auto b = darkroom::makeCpuBuffer(n, n, {{"R", darkroom::ChannelType::Float32}, {"G", darkroom::ChannelType::Float32},
-                                                {"B", darkroom::ChannelType::Float32}, {"A", darkroom::ChannelType::Float32},
-                                                {"Z", darkroom::ChannelType::Float32},
-                                                {"value", darkroom::ChannelType::Float32}});
         const char* names[] = {"R", "G", "B", "A", "Z", "value"};
+        std::vector<darkroom::ChannelDesc> channels;
+        for (const char* name : names) channels.push_back({name, darkroom::ChannelType::Float32});
+        auto b = darkroom::makeCpuBuffer(n, n, channels);
         for (int c = 0; c < 6; ++c) {
             float* p = b->writeFloat(names[c]);
+            const float scale = c == 4 ? 10.0f : 1.0f, background = c == 4 ? INFINITY : 0.0f;
             for (int y = 0; y < n; ++y)
                 for (int x = 0; x < n; ++x) {
                     const float u = float(x) / n, v = float(y) / n;
                     const bool inside = (u - 0.5f) * (u - 0.5f) + (v - 0.5f) * (v - 0.5f) < 0.16f;
-                    p[std::size_t(y) * n + x] = inside ? std::sin(float(c + 1) * u * 7.0f + v * 3.0f) * (c == 4 ? 10.0f : 1.0f)
-                                                       : (c == 4 ? INFINITY : 0.0f);
+                    p[std::size_t(y) * n + x] =
+                        inside ? std::sin(float(c + 1) * u * 7.0f + v * 3.0f) * scale : background;
                 }
         }
         darkroom::writeImage(*b, path);

@@ -68,7 +68,8 @@ int registerAll() {
                                                          {"up", PngFilter::Up},       {"paeth", PngFilter::Paeth},
                                                          {"adaptive", PngFilter::Adaptive}};
     for (const auto& [name, f] : filters) add(std::string("libdeflate_l1_") + name, libdeflate(1, f));
-    for (int level : {2, 3, 4, 6}) add("libdeflate_l" + std::to_string(level) + "_up", libdeflate(level, PngFilter::Up));
+    for (int level : {2, 3, 4, 6})
+        add("libdeflate_l" + std::to_string(level) + "_up", libdeflate(level, PngFilter::Up));
     add("libdeflate_l6_adaptive", libdeflate(6, PngFilter::Adaptive));
     return 0;
 }
