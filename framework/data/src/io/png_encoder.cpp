@@ -58,7 +58,7 @@ struct CompressorDeleter {
 
 // Bytes left uninitialised (new[], not std::vector): at 2048² RGBA the
 // filtered rows and the deflate bound are 16 MiB each, and zeroing them
-// cost as much as deflating at level 1.
+// showed in the encode (123 -> 96 ms at 2048², one run on a loaded machine).
 struct Bytes {
     std::unique_ptr<unsigned char[]> data;
     std::size_t size = 0;
