@@ -12,6 +12,8 @@ packages=(
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   libyaml-cpp-dev libfmt-dev libcli11-dev libexpat1-dev zlib1g-dev libzip-dev libsqlite3-dev
   nlohmann-json3-dev
+  # the PNG writer's deflate (docs/performance.md, "Codecs")
+  libdeflate-dev
   # pycinema's and ParaView's .h5 Cinema products (docs/formats.md)
   libhdf5-dev
   # text of ColorLegend and Annotation (pango, cairo; font: fonts-dejavu-core

@@ -1,6 +1,7 @@
 #pragma once
-// PNG written with libpng, not through OpenImageIO (see exr_file.h for why):
-// the runner's most common output. Internal to the framework.
+// PNG written natively (png_encoder.h: libdeflate), not through OpenImageIO
+// (see exr_file.h for why): the runner's most common output. Internal to the
+// framework.
 #include <darkroom/buffer.h>
 #include <darkroom/data/image_io.h>
 

@@ -1,9 +1,10 @@
 #pragma once
-// Reading and writing images. EXR goes through OpenEXR and PNG through libpng
-// directly; every other format through OpenImageIO, in a module the framework
-// opens the first time such a file is met (framework/data/oiio/module.h), so runs
-// on EXR and PNG alone never load OpenImageIO's hundreds of libraries. Files
-// are the same whichever library handles them.
+// Reading and writing images. EXR goes through OpenEXR and PNG is written by
+// the framework itself (libdeflate); every other format through OpenImageIO,
+// in a module the framework opens the first time such a file is met
+// (framework/data/oiio/module.h), so runs on EXR and PNG alone never load
+// OpenImageIO's hundreds of libraries. Files are the same whichever library
+// handles them.
 #include <darkroom/buffer.h>
 #include <darkroom/export.h>
 

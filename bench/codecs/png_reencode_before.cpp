@@ -1,0 +1,45 @@
+// Decodes a PNG (libpng) and encodes its pixels again as the writer did
+// before libdeflate (libpng_encode.h: zlib level 2, "up", the same chunks).
+// With the examples' manifest, this shows that a new PNG holds the very
+// pixels of the recorded one: same re-encoded bytes, same SHA-256
+// (bench/codecs/check_pngs_against_manifest.sh).
+//   png_reencode_before IN.png OUT.png
+#include "libpng_encode.h"
+
+#include <png.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: %s IN.png OUT.png\n", argv[0]);
+        return 2;
+    }
+    std::ifstream in(argv[1], std::ios::binary);
+    const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(&image, file.data(), file.size())) {
+        std::fprintf(stderr, "%s: %s\n", argv[1], image.message);
+        return 1;
+    }
+    // The file's own 8-bit layout: no conversion.
+    const int channels = int(PNG_IMAGE_SAMPLE_CHANNELS(image.format));
+    if (image.format & PNG_FORMAT_FLAG_LINEAR) {
+        std::fprintf(stderr, "%s: not an 8-bit PNG\n", argv[1]);
+        return 1;
+    }
+    std::vector<unsigned char> pixels(PNG_IMAGE_SIZE(image));
+    if (!png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr)) {
+        std::fprintf(stderr, "%s: %s\n", argv[1], image.message);
+        return 1;
+    }
+    const std::string png = darkroom::bench::libpngEncode(pixels.data(), int(image.width), int(image.height), channels,
+                                                          2, PNG_FILTER_UP);
+    std::ofstream(argv[2], std::ios::binary).write(png.data(), std::streamsize(png.size()));
+    return 0;
+}

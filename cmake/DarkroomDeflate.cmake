@@ -1,0 +1,19 @@
+# libdeflate (Debian's libdeflate-dev): the PNG writer deflates with it,
+# faster than zlib for the same size (docs/performance.md, "Codecs"). Shared
+# by the main build, the benchmarks and the fuzz project.
+#
+# Defines darkroom_deflate, an interface target with libdeflate's include
+# folder and library. Only png_encoder.cpp includes libdeflate.h.
+if(TARGET darkroom_deflate)
+  return()
+endif()
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBDEFLATE QUIET IMPORTED_TARGET libdeflate)
+if(NOT LIBDEFLATE_FOUND)
+  # (No semicolons in the text: CMake would read them as list separators.)
+  message(FATAL_ERROR "Darkroom writes PNG with libdeflate, which was not found. "
+                      "Install the Debian package libdeflate-dev "
+                      "(apt-get install libdeflate-dev, or run scripts/install-deps.sh as root)")
+endif()
+add_library(darkroom_deflate INTERFACE)
+target_link_libraries(darkroom_deflate INTERFACE PkgConfig::LIBDEFLATE)
