@@ -1,7 +1,8 @@
 #include "eight_bit.h"
 
+#include "srgb_code.h"
+
 #include <darkroom/error.h>
-#include <darkroom/srgb.h>
 #include <darkroom/channel_text.h>
 
 #include <tbb/parallel_for.h>
@@ -56,13 +57,12 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
     auto encode = [](float v, bool alpha) -> unsigned char {
         if (!(v > 0.0f)) return 0;  // also NaN
         if (v >= 1.0f) return 255;
-        return (unsigned char)std::lround((alpha ? v : linearToSrgb(v)) * 255.0f);
+        return alpha ? (unsigned char)std::lround(v * 255.0f) : srgbCode(v);
     };
     const std::size_t pixels = image.pixelCount();
     const int n = out.channels;
     out.data.resize(pixels * std::size_t(n));
-    // sRGB encoding (a pow per value) costs more than the rest of a PNG
-    // write at the fast compression levels: rows in parallel.
+    // sRGB encoding by thresholds (srgb_code.h), rows in parallel.
     const std::size_t w = std::size_t(image.width());
     tbb::parallel_for(0, image.height(), [&](int y) {
         for (std::size_t p = std::size_t(y) * w; p < std::size_t(y + 1) * w; ++p)
