@@ -1,10 +1,10 @@
 #include <darkroom/channel_text.h>
 #include <darkroom/depth_input.h>
 #include <darkroom/error.h>
+#include <darkroom/product_database.h>
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 
 namespace darkroom {
@@ -15,14 +15,6 @@ std::string number(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", v);
     return text;
-}
-
-// The Cinema database a product path lies in (the nearest folder ending in
-// .cdb, the path itself included); "" when it lies in none.
-std::string databaseOf(const std::string& source) {
-    for (std::filesystem::path p(source); !p.empty() && p != p.root_path(); p = p.parent_path())
-        if (p.extension() == ".cdb") return p.string();
-    return "";
 }
 
 }  // namespace
@@ -82,7 +74,7 @@ std::string missingDepthMessage(const Buffer& in) {
     const std::string need = "; depth-based passes need a depth channel (CISDepth in a composable image set, Z "
                              "in an EXR or a Darkroom database)";
     if (source != attributes.end()) {
-        if (const std::string db = databaseOf(source->second); !db.empty())
+        if (const std::string db = databaseOfProduct(source->second); !db.empty())
             return "database " + db + " stores no depth (channels: " + channels + ")" + need;
         return source->second + " stores no depth (channels: " + channels + ")" + need;
     }

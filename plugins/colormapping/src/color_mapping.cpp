@@ -220,9 +220,8 @@ void ColorMapping::execute(Context& ctx) {
     const std::vector<Color>& table = lookup->table;
     // Without depth, NaN is how ParaView's float images (and TTK's) mark the
     // background: transparent, as background with depth is.
-    const Color nan = !depth                                  ? Color{0.0f, 0.0f, 0.0f, 0.0f}
-                      : ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor
-                                                                    : ctx.get(nanColor_);
+    const Color nan = !depth ? Color{0.0f, 0.0f, 0.0f, 0.0f}
+                             : (ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_));
     const float alpha = float(ctx.get(opacity_));
 
     const bool logScale = ctx.get(scale_) == Scale::Log;

@@ -4,6 +4,7 @@
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
+#include <darkroom/product_database.h>
 #include <darkroom/data/cinema/composable.h>
 #include <darkroom/data/cinema/database.h>
 #include <darkroom/data/cinema/product.h>
@@ -25,23 +26,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kMaxLevels = 8;  // products nest a few folders deep (image/<phi>/0.png)
-
 std::string findDatabase(const std::string& source) {
     if (source.empty())
         throw Error("range 'database': the image names no source product (metadata 'source'), so the database it "
                     "came from is unknown; connect a CinemaReader, or use range automatic or manual");
-    std::error_code ec;
-    // A product's folder and those above it; a composable image set's
-    // buffer names the database folder itself.
-    fs::path dir = fs::absolute(fs::path(source), ec);
-    if (!fs::is_directory(dir, ec)) dir = dir.parent_path();
-    for (int i = 0; i < kMaxLevels && !dir.empty(); ++i, dir = dir.parent_path()) {
-        if (fs::is_regular_file(dir / "data.csv", ec)) return dir.string();
-        if (dir == dir.parent_path()) break;
-    }
-    throw Error("range 'database': no folder above " + source + " holds a data.csv; the image was not read from a "
-                "Cinema database");
+    std::string folder = databaseOfProduct(source);
+    if (folder.empty())
+        throw Error("range 'database': no folder above " + source + " holds a data.csv; the image was not read from "
+                    "a Cinema database");
+    return folder;
 }
 
 constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
@@ -61,15 +54,10 @@ std::uint64_t mixStamp(std::uint64_t h, const std::string& path) {
     return fnv(fnv(h, values, sizeof values), path.data(), path.size());
 }
 
-// The rows of `selection` (--where syntax; empty: all), as a set.
+// The rows of `selection` (--where syntax; empty selects every row), as a set.
 std::set<std::size_t> selectedRows(const CinemaDatabase& db, const std::string& selection) {
-    std::set<std::size_t> rows;
-    if (selection.empty()) {
-        for (std::size_t r = 0; r < db.rowCount(); ++r) rows.insert(r);
-    } else {
-        for (const std::size_t r : db.selectWhere(selection)) rows.insert(r);
-    }
-    return rows;
+    const std::vector<std::size_t> rows = db.selectWhere(selection);
+    return {rows.begin(), rows.end()};
 }
 
 // The selected rows whose products hold `channel`: one per entry (a

@@ -14,6 +14,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 #include <cstdlib>
 
@@ -139,12 +141,15 @@ TEST(SsaoWithoutCamera, OneWarningSaysWhatWasAssumed) {
 }
 
 TEST(SsaoWithoutCamera, AnImageWithoutDepthNamesItsDatabase) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.file("extract.cdb"));
+    test::writeText(dir.file("extract.cdb/data.csv"), "phi,FILE\n0,image/0.png\n");
     auto image = test::makeImage(4, 4, {"R", "G"}, [](int, int, int) { return 0.5f; });
-    image->metadata().attributes["source"] = "/data/extract.cdb/image/0.png";
+    image->metadata().attributes["source"] = dir.file("extract.cdb/image/0.png");
     try {
         runSsao(image);
         FAIL() << "no depth, no error";
     } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("database /data/extract.cdb stores no depth (channels: R, G)"));
+        EXPECT_THAT(e.what(), HasSubstr("database " + dir.file("extract.cdb") + " stores no depth (channels: R, G)"));
     }
 }

@@ -8,6 +8,8 @@
 #include <darkroom/error.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <limits>
 #include <vector>
 
@@ -66,9 +68,16 @@ TEST(ImageSpaceCamera, AnImageWithItsOwnCameraKeepsIt) {
 }
 
 TEST(ImageSpaceCamera, MissingDepthNamesTheFileOrDatabase) {
+    // The database is the folder holding data.csv above the product,
+    // whatever its name.
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.file("extract"));
+    test::writeText(dir.file("extract/data.csv"), "phi,FILE\n0,image/0.png\n");
     auto b = test::makeImage(2, 2, {"Elevation"}, [](int, int, int) { return 1.0f; });
-    b->metadata().attributes["source"] = "/x/extract.cdb";
-    EXPECT_EQ(missingDepthMessage(*b).rfind("database /x/extract.cdb stores no depth (channels: Elevation)", 0), 0u)
+    b->metadata().attributes["source"] = dir.file("extract/image/0.png");
+    EXPECT_EQ(missingDepthMessage(*b).rfind("database " + dir.file("extract") + " stores no depth (channels: Elevation)",
+                                            0),
+              0u)
         << missingDepthMessage(*b);
     b->metadata().attributes["source"] = "/x/picture.png";
     EXPECT_EQ(missingDepthMessage(*b).rfind("/x/picture.png stores no depth", 0), 0u);
