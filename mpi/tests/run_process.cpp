@@ -55,26 +55,5 @@ RunResult runOnRanks(int ranks, const std::vector<std::string>& args) {
     return runProgram(argv, {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"});
 }
 
-std::string compareFolders(const std::string& a, const std::string& b) {
-    namespace fs = std::filesystem;
-    auto names = [](const std::string& folder) {
-        std::set<std::string> s;
-        for (const auto& e : fs::directory_iterator(folder)) s.insert(e.path().filename().string());
-        return s;
-    };
-    const auto na = names(a), nb = names(b);
-    if (na != nb) {
-        std::string d = "the folders hold different files:";
-        for (const auto& n : na)
-            if (!nb.count(n)) d += " " + n + " (only in " + a + ")";
-        for (const auto& n : nb)
-            if (!na.count(n)) d += " " + n + " (only in " + b + ")";
-        return d;
-    }
-    std::string d;
-    for (const auto& n : na)
-        if (readText(a + "/" + n) != readText(b + "/" + n)) d += (d.empty() ? "" : ", ") + n;
-    return d.empty() ? d : "these files differ: " + d;
-}
 
 }  // namespace darkroom::test

@@ -21,8 +21,4 @@ RunResult runAlone(const std::vector<std::string>& args);
 // `mpirun -np ranks --oversubscribe darkroom args...`, allowed to run as root.
 RunResult runOnRanks(int ranks, const std::vector<std::string>& args);
 
-// Every file of two folders (names and bytes) is the same; otherwise a
-// description of the first differences.
-std::string compareFolders(const std::string& a, const std::string& b);
-
 }  // namespace darkroom::test

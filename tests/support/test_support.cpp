@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -63,6 +64,29 @@ std::string readText(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
+}
+
+std::string compareFolders(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    const auto files = [](const std::string& folder) {
+        std::set<std::string> names;
+        for (const auto& e : fs::recursive_directory_iterator(folder))
+            if (!e.is_directory()) names.insert(fs::relative(e.path(), folder).string());
+        return names;
+    };
+    const auto na = files(a), nb = files(b);
+    if (na != nb) {
+        std::string d = "the folders hold different files:";
+        for (const auto& n : na)
+            if (!nb.count(n)) d += " " + n + " (only in " + a + ")";
+        for (const auto& n : nb)
+            if (!na.count(n)) d += " " + n + " (only in " + b + ")";
+        return d;
+    }
+    std::string d;
+    for (const auto& n : na)
+        if (readText(a + "/" + n) != readText(b + "/" + n)) d += (d.empty() ? "" : ", ") + n;
+    return d.empty() ? d : "these files differ: " + d;
 }
 
 void writeText(const std::string& path, const std::string& text) {

@@ -35,6 +35,9 @@ std::shared_ptr<WritableBuffer> makeImage(int w, int h, const std::vector<std::s
 
 // Reads a whole text file (empty string if missing).
 std::string readText(const std::string& path);
+// "" when two folders hold the same files, with the same bytes, down every
+// subfolder; otherwise a description of the differences.
+std::string compareFolders(const std::string& a, const std::string& b);
 void writeText(const std::string& path, const std::string& text);
 
 }  // namespace darkroom::test

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <set>
 
 namespace darkroom::cli {
@@ -34,6 +35,7 @@ struct RunArgs {
     bool resume = false;
     bool profile = false;
     double cacheMB = 2048;
+    int inFlight = 0;
 };
 
 // Reports the batch's failures the way the runner reports them: a graph's
@@ -68,20 +70,28 @@ int reportBatch(const workflows::BatchSummary& summary, bool quiet) {
 int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, EvaluatorOptions o) {
     // Under mpirun, rank 0 alone draws the bar.
     ProgressBar bar("run", showProgress(global));
-    o.onProgress = [&bar](double f, const std::string& node) { bar.update(f, node); };
+    // With entries in flight, progress, warnings and profiles come from
+    // several threads: one at a time on the terminal.
+    std::mutex terminal;
+    o.onProgress = [&bar, &terminal](double f, const std::string& node) {
+        std::lock_guard<std::mutex> lock(terminal);
+        bar.update(f, node);
+    };
     WarningLog warnings;
-    o.onWarning = [&bar, &warnings](const Diagnostic& w) {
+    o.onWarning = [&bar, &warnings, &terminal](const Diagnostic& w) {
+        std::lock_guard<std::mutex> lock(terminal);
         if (!warnings.firstTime(w)) return;
         bar.finish();
         report({w});
     };
     Evaluator ev(o);
-    auto evaluate = [&](const std::string& title, std::vector<std::string> sinks = {}) {
+    auto evaluate = [&](Evaluator& e, const Graph& graph, const std::string& title, std::vector<std::string> sinks) {
         const auto t0 = std::chrono::steady_clock::now();
-        ev.run(g, std::move(sinks));
+        e.run(graph, std::move(sinks));
         if (a.profile) {
+            std::lock_guard<std::mutex> lock(terminal);
             bar.finish();
-            printProfile(title, ev.lastProfile(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+            printProfile(title, e.lastProfile(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
     };
     ProcessGroup& group = processGroup();
@@ -93,17 +103,21 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
                 fmt::print(stderr, "darkroom: note: without --foreach there is one evaluation; rank 0 runs it and "
                                    "the other {} ranks have nothing to do\n", group.size() - 1);
         }
-        evaluate(a.path);
+        evaluate(ev, g, a.path, {});
         bar.finish();
         warnings.reportRepeats();
         return kOk;
     }
     workflows::BatchCallbacks cb;
-    cb.evaluate = [&](const std::string& title, const std::vector<std::string>& sinks) { evaluate(title, sinks); };
-    cb.progress = [&bar](double f, const std::string& entry) { bar.update(f, entry); };
+    cb.evaluate = [&](Evaluator& e, const Graph& graph, const std::string& title,
+                      const std::vector<std::string>& sinks) { evaluate(e, graph, title, sinks); };
+    cb.progress = [&bar, &terminal](double f, const std::string& entry) {
+        std::lock_guard<std::mutex> lock(terminal);
+        bar.update(f, entry);
+    };
     workflows::BatchSummary summary;
     try {
-        summary = workflows::shadeEntries(g, ev, o, {a.foreach, a.where, a.index, a.resume}, group, cb);
+        summary = workflows::shadeEntries(g, ev, o, {a.foreach, a.where, a.index, a.resume, a.inFlight}, group, cb);
     } catch (const InputError& e) {
         bar.finish();
         warnings.reportRepeats();
@@ -192,6 +206,13 @@ void addRunCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
     cmd->add_flag("--profile", a->profile,
                   "Print each node's time, whether it ran or came from the cache, and the memory it allocated "
                   "(per entry with --foreach)");
+    cmd->add_option("--in-flight", a->inFlight,
+                    "With --foreach: entries shaded at once in this process, each reading, shading or writing "
+                    "while the others do (0: automatic, 3; 1: one after another; under mpirun each rank takes "
+                    "one at a time). Outputs are the same whatever the number; memory grows with it")
+        ->needs(fe)
+        ->check(CLI::NonNegativeNumber)
+        ->type_name("N");
     cmd->add_option("--cache-memory", a->cacheMB,
                     "With --foreach: memory for results kept between entries, in MiB (least recently used "
                     "dropped first; default 2048)")

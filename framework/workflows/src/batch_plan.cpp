@@ -1,154 +1,143 @@
 #include "batch_plan.h"
 
+#include "batch_entries.h"
 #include "entry_ports.h"
 
-#include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
-#include <darkroom/data/cinema/csv.h>
-#include <darkroom/data/cinema/naming.h>
+#include <darkroom/core/path_overlap.h>
 
 #include <algorithm>
-#include <filesystem>
+#include <set>
 
 namespace darkroom::workflows::batch {
 
 namespace fs = std::filesystem;
 
+std::vector<std::string> Plan::filesOf(std::size_t row) const {
+    std::vector<std::string> files;
+    for (const auto& out : outputs)
+        files.push_back(resolvedOutput(options, perEntryPath(out.original, entryName(row), *db, row)));
+    return files;
+}
+
 namespace {
 
-// The text a placeholder stands for, safe in a file name: the entry's name,
-// or a cell of its row.
-std::string placeholderValue(const std::string& path, const std::string& name, const std::string& entry,
-                             const CinemaDatabase& db, std::size_t row, bool startsName) {
-    if (name == "entry") return entry;
-    if (const auto column = db.findColumn(name)) return cinemaNamePart(db.cell(row, *column), startsName);
-    std::string columns;
-    for (const auto& c : db.columns()) columns += (columns.empty() ? "" : ", ") + c.name;
-    throw InputError("the output path " + path + " names {" + name + "}, which is neither {entry} nor a column of " +
-                     db.path() + " (its columns: " + columns + ")");
+// "" when every entry has files of its own; else a message naming the
+// first two entries that would write the same file.
+std::string sharedOutputFile(const Plan& p) {
+    std::map<std::string, std::size_t> owner;
+    for (const std::size_t row : p.rows)
+        for (const auto& f : p.filesOf(row)) {
+            const auto [it, fresh] = owner.emplace(fs::absolute(f).lexically_normal().string(), row);
+            if (!fresh && it->second != row)
+                return "--foreach: the entries " + p.db->formatParameters(it->second) + " and " +
+                       p.db->formatParameters(row) + " would both be written to " + f +
+                       " (in file names every character but letters, digits and . + - becomes ~); "
+                       "nothing was shaded";
+        }
+    return "";
+}
+
+// The database read and the selected rows; throws InputError.
+void openSource(const Graph& g, const BatchSettings& s, Plan& p) {
+    const Node* reader = g.node(s.reader);
+    const PortSpec* database = reader ? entryReaderDatabase(g, *reader) : nullptr;
+    if (!database)
+        throw InputError("--foreach " + s.reader +
+                         ": expected the name of a node that reads a database entry by entry, such as CinemaReader "
+                         "(a row output, a path input for the database and an integer input 'entry')");
+    p.source = currentValue(g, s.reader, database->name);
+    if (p.source.is_relative()) p.source = fs::path(p.options.inputBase) / p.source;
+    // Named as the node names its own failures: the database is its parameter.
+    try {
+        p.db.emplace(CinemaDatabase::open(p.source.string()));
+    } catch (const Error& e) {
+        throw InputError("node '" + s.reader + "' (" + reader->type + "): " + e.what());
+    }
+    std::vector<std::size_t> selected;
+    if (s.where.empty())
+        for (std::size_t r = 0; r < p.db->rowCount(); ++r) selected.push_back(r);
+    else
+        selected = p.db->selectWhere(s.where);
+    if (selected.empty()) throw InputError(p.source.string() + ": no entry matches '" + s.where + "'");
+    try {
+        BatchEntries entries = batchEntries(*p.db, selected);
+        p.rows = std::move(entries.rows);
+        p.names = std::move(entries.names);
+    } catch (const Error& e) {
+        throw InputError("node '" + s.reader + "' (" + reader->type + "): " + e.what());
+    }
+}
+
+// What reads a per-entry sink's output: only a sink run after the last entry,
+// directly, from a database sink (Movie from CinemaWriter's `written`), which
+// then gets the database's final path; throws InputError for anything else.
+void planAfterLast(const Graph& g, Plan& p) {
+    const auto in = [](const std::vector<std::string>& names, const std::string& n) {
+        return std::find(names.begin(), names.end(), n) != names.end();
+    };
+    for (const Edge& e : g.edges()) {
+        if (!in(p.entrySinks, e.from.node)) continue;
+        const auto d = std::find_if(p.databases.begin(), p.databases.end(),
+                                    [&](const DatabaseSink& x) { return x.node == e.from.node; });
+        if (d == p.databases.end() || !in(p.finalSinks, e.to.node))
+            throw InputError("--foreach: node '" + e.to.node + "' reads " + e.from.str() +
+                             ", which is written entry by entry; only a node that writes (such as Movie) may read "
+                             "it, directly, and only the database of a CinemaWriter fed the reader's row: it then "
+                             "runs once, after the last entry");
+        p.afterLast.emplace_back(e, fs::absolute(d->database).lexically_normal().string());
+    }
+}
+
+// Sinks that depend on the entry run once per entry; the others once, after
+// the last: those no entry reaches, and those that read what another sink
+// wrote (a Movie connected to CinemaWriter's `written`).
+void planSinks(const Graph& g, const BatchSettings& s, Plan& p) {
+    const std::vector<std::string> sinks = g.sinks();
+    const std::set<std::string> perEntry = g.downstreamOf({s.reader});
+    for (const auto& sink : sinks) {
+        bool readsAWrite = false;
+        for (const auto& other : sinks) readsAWrite = readsAWrite || (other != sink && g.downstreamOf({other}).count(sink));
+        (perEntry.count(sink) && !readsAWrite ? p.entrySinks : p.finalSinks).push_back(sink);
+    }
+    if (p.entrySinks.empty()) std::swap(p.entrySinks, p.finalSinks);  // nothing reads the entry: every sink per entry
+}
+
+// The sinks per entry and after, what they write, and the refusals that
+// need no file system state: throws InputError.
+void planOutputs(const Graph& g, const BatchSettings& s, int writers, Plan& p) {
+    planSinks(g, s, p);
+    p.outputs = outputPorts(g, p.entrySinks);
+    try {
+        p.databases = databaseSinks(g, p.entrySinks, p.options, writers > 1);
+    } catch (const Error& e) {
+        throw InputError(e.what());
+    }
+    p.staging = writers > 1 && !p.databases.empty();
+    planAfterLast(g, p);
+    // A database written over the one read would lose the products being
+    // shaded (D1 of issue 26). The node refuses the same when it runs alone;
+    // staged, only the merge would meet the source.
+    for (const auto& d : p.databases)
+        if (pathsOverlap(d.database, p.source.string()))
+            throw InputError(label(d) + ": the output " + d.database + " " +
+                             overlapWording(d.database, p.source.string()) + " " + absoluteNormal(p.source.string()) +
+                             ", the database node '" + s.reader +
+                             "' reads; writing there would destroy the input. Choose an output outside the inputs");
+    // Two entries whose parameters give one file name (a/b and a~b both
+    // become a~b) would overwrite each other.
+    if (const std::string clash = sharedOutputFile(p); !clash.empty()) throw InputError(clash);
 }
 
 }  // namespace
 
-std::string perEntryPath(const std::string& path, const std::string& entry, const CinemaDatabase& db,
-                         std::size_t row) {
-    std::string out;
-    bool placeholders = false;
-    for (std::size_t i = 0; i < path.size();) {
-        const std::size_t close = path[i] == '{' ? path.find_first_of("{}/", i + 1) : std::string::npos;
-        if (close == std::string::npos || path[close] != '}' || close == i + 1) {
-            out += path[i++];
-            continue;
-        }
-        const bool startsName = out.empty() || out.back() == '/';
-        out += placeholderValue(path, path.substr(i + 1, close - i - 1), entry, db, row, startsName);
-        placeholders = true;
-        i = close + 1;
-    }
-    if (placeholders) return out;
-    const fs::path p(path);
-    return (p.parent_path() / (p.stem().string() + "_" + entry + p.extension().string())).string();
-}
-
-// The output paths (PortType::OutputPath) of the sinks that run per entry,
-// to rename per entry. A sink fed the entry's row (a Row input connected, as
-// CinemaWriter has) names its entries itself: its paths stay as given.
-std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks) {
-    std::vector<OutputPort> out;
-    for (const auto& name : sinks) {
-        const Node* n = g.node(name);
-        if (isFedARow(g, *n)) continue;
-        for (const auto& p : g.ports(*n).inputs) {
-            if (p.type != PortType::OutputPath) continue;
-            const Value* v = n->parameter(p.name);
-            const std::string original = v ? v->asString() : p.defaultValue.asString();
-            if (!original.empty()) out.push_back({name, p.name, original});
-        }
-    }
-    return out;
-}
-
-std::string currentValue(const Graph& g, const std::string& node, const std::string& port) {
-    const Node* n = g.node(node);
-    if (const Value* v = n->parameter(port)) return v->asString();
-    return g.ports(*n).input(port)->defaultValue.asString();
-}
-
-// Where the evaluator writes a relative output path (HostContext::resolveOutputPath).
-std::string resolvedOutput(const EvaluatorOptions& o, const std::string& path) {
-    const fs::path p(path);
-    const std::string& base = o.outputDir.empty() ? o.inputBase : o.outputDir;
-    if (p.is_absolute() || base.empty()) return p.string();
-    return (fs::path(base) / p).lexically_normal().string();
-}
-
-// The index's file columns: one per output path of the per-entry sinks and
-// one per database a row-fed sink writes (its product of the entry); FILE
-// alone, or FILE_<node>[_<port>] for several.
-std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
-                                      const std::vector<DatabaseSink>& databases) {
-    std::map<std::string, int> portsPerNode;
-    for (const auto& o : outputs) ++portsPerNode[o.node];
-    const std::size_t count = outputs.size() + databases.size();
-    std::vector<std::string> names;
-    for (const auto& o : outputs)
-        names.push_back(count == 1 ? "FILE" : "FILE_" + o.node + (portsPerNode[o.node] > 1 ? "_" + o.port : ""));
-    for (const auto& d : databases) names.push_back(count == 1 ? "FILE" : "FILE_" + d.node);
-    return names;
-}
-
-// The index: the database's parameter columns, then the file columns, one
-// row per entry in database order, file names relative to the index's folder.
-void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
-                const std::map<std::size_t, std::vector<std::string>>& filesByRow) {
-    const fs::path folder = fs::absolute(fs::path(path)).parent_path();
-    std::vector<std::string> cells;
-    const auto line = [&cells]() {
-        std::string text;
-        for (std::size_t k = 0; k < cells.size(); ++k) text += (k ? "," : "") + quoteCsvCell(cells[k]);
-        cells.clear();
-        return text + "\n";
-    };
-    const auto parameters = db.parameterColumns();
-    for (auto c : parameters) cells.push_back(db.columns()[c].name);
-    cells.insert(cells.end(), fileColumns.begin(), fileColumns.end());
-    std::string text = line();
-    for (const auto& [row, files] : filesByRow) {
-        for (auto c : parameters) cells.push_back(db.cell(row, c));
-        for (const auto& f : files) cells.push_back(fs::absolute(f).lexically_proximate(folder).string());
-        text += line();
-    }
-    if (!folder.empty()) fs::create_directories(folder);
-    writeFileAtomic(path, text);
-}
-
-GraphEdits::~GraphEdits() {
-    // Parameters first (an input given a path in place of its edge loses it),
-    // then the edges; the values were the graph's, so nothing is refused.
-    try {
-        for (auto it = parameters_.rbegin(); it != parameters_.rend(); ++it) {
-            if (it->value) g_.setParameter(it->node, it->port, *it->value);
-            else g_.clearParameter(it->node, it->port);
-        }
-        for (const Edge& e : edges_) g_.connect(e.from, e.to);
-    } catch (...) {
-        // A graph the batch cannot put back is left as the batch made it.
-    }
-}
-
-void GraphEdits::set(const std::string& node, const std::string& port, Value value) {
-    const bool known = std::any_of(parameters_.begin(), parameters_.end(),
-                                   [&](const Saved& s) { return s.node == node && s.port == port; });
-    if (!known) {
-        const Value* before = g_.node(node)->parameter(port);
-        parameters_.push_back({node, port, before ? std::optional<Value>(*before) : std::nullopt});
-    }
-    g_.setParameter(node, port, std::move(value));
-}
-
-void GraphEdits::disconnect(const Edge& e) {
-    g_.disconnect(e.from, e.to);
-    edges_.push_back(e);
+Plan planBatch(const Graph& g, const BatchSettings& settings, EvaluatorOptions options, int processes, int lanes) {
+    Plan p;
+    p.options = std::move(options);
+    openSource(g, settings, p);
+    planOutputs(g, settings, processes * lanes, p);
+    p.firstLaneInPlace = p.staging && processes == 1;
+    return p;
 }
 
 }  // namespace darkroom::workflows::batch

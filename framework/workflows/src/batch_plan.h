@@ -1,77 +1,64 @@
 #pragma once
-// What a batch writes, worked out before any entry is shaded: the sinks per
-// entry and after the last, the output paths renamed per entry, and the
-// index of the entries and their files (batch.cpp).
+// What a batch shades and writes, worked out before any entry is shaded and
+// the same on every process: the database read and the selected entries, the
+// sinks per entry and after the last, the output paths renamed per entry and
+// the databases row-fed sinks fill (batch.cpp). Every refusal that needs no
+// file system state is made here.
+#include "batch_paths.h"
+
 #include <darkroom/core/evaluator.h>
 #include <darkroom/data/cinema/database.h>
+#include <darkroom/workflows/batch.h>
 #include <darkroom/workflows/written_databases.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <map>
-#include <set>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace darkroom::workflows::batch {
 
-// The output path of entry `row`, named `entry` (batch_entries.h):
-// out.png -> out_phi=30_theta=45.png, or, when the path holds placeholders,
-// {entry} replaced by that name and
-// {column} by the row's cell in that column of the database ("frames/{time}.png"),
-// made safe for file names as entry names are. A placeholder naming no
-// column throws darkroom::InputError naming the path and listing the columns.
-std::string perEntryPath(const std::string& path, const std::string& entry, const CinemaDatabase& db,
-                         std::size_t row);
+struct Plan {
+    std::filesystem::path source;  // the database read
+    std::optional<CinemaDatabase> db;
+    std::vector<std::size_t> rows;  // the selected entries' rows, in database order (batch_entries.h)
+    // Each entry's file-name-safe name, for the output paths renamed per
+    // entry. A database sink (CinemaWriter) names its entries from the row
+    // it is fed, so its files go by CinemaDatabase::entryName.
+    std::map<std::size_t, std::string> names;
+    std::vector<std::string> entrySinks, finalSinks;
+    std::vector<OutputPort> outputs;
+    std::vector<DatabaseSink> databases;
+    // Edges from a database sink into a sink run after the last entry, and
+    // the database's final path: after the last entry the edge is replaced by
+    // that path, so the reader of the database (Movie) does not pull the
+    // per-entry graph again.
+    std::vector<std::pair<Edge, std::string>> afterLast;
+    // Databases are written through staging databases, one per writer (a
+    // process, or an entry in flight in one): batch_staging.h.
+    bool staging = false;
+    // Staging in a lone process: its first lane writes the databases in
+    // place, in their nodes' modes, and the merge adds the other lanes'
+    // entries to them (kept, as a resume keeps them).
+    bool firstLaneInPlace = false;
+    EvaluatorOptions options;
 
-// A Path input of a per-entry sink, renamed per entry.
-struct OutputPort {
-    std::string node, port, original;
+    const std::string& entryName(std::size_t row) const { return names.at(row); }
+
+    // The files entry `row` writes through the renamed output paths.
+    std::vector<std::string> filesOf(std::size_t row) const;
 };
 
-// The Path parameters of the output nodes that run per entry, to rename per
-// entry. A sink fed the entry's row (a Row input connected, as CinemaWriter
-// has) names its entries itself: its paths stay as given.
-std::vector<OutputPort> outputPorts(const Graph& g, const std::vector<std::string>& sinks);
-
-// A node's parameter, or its port's default.
-std::string currentValue(const Graph& g, const std::string& node, const std::string& port);
-
-// Where the evaluator writes a relative output path (HostContext::resolveOutputPath).
-std::string resolvedOutput(const EvaluatorOptions& o, const std::string& path);
-
-// The index's file columns: one per output path of the per-entry sinks and
-// one per database a row-fed sink writes; FILE alone, or FILE_<node>[_<port>].
-std::vector<std::string> indexColumns(const std::vector<OutputPort>& outputs,
-                                      const std::vector<DatabaseSink>& databases);
-
-// The index: the database's parameter columns, then the file columns, one
-// row per entry in database order, file names relative to the index's folder.
-void writeIndex(const std::string& path, const CinemaDatabase& db, const std::vector<std::string>& fileColumns,
-                const std::map<std::size_t, std::vector<std::string>>& filesByRow);
-
-// The batch's edits of the caller's graph (an entry's parameters, staging
-// paths, an edge replaced after the last entry), undone when it goes out of
-// scope: a long-lived front end (the editor, a notebook) keeps the pipeline
-// it had, and only the evaluator's cache remembers the batch.
-class GraphEdits {
-public:
-    explicit GraphEdits(Graph& g) : g_(g) {}
-    ~GraphEdits();
-    GraphEdits(const GraphEdits&) = delete;
-    GraphEdits& operator=(const GraphEdits&) = delete;
-    const Graph& graph() const { return g_; }
-    void set(const std::string& node, const std::string& port, Value value);
-    void disconnect(const Edge& e);
-
-private:
-    struct Saved {
-        std::string node, port;
-        std::optional<Value> value;  // unset: the port's default
-    };
-    Graph& g_;
-    std::vector<Saved> parameters_;
-    std::vector<Edge> edges_;
-};
+// The plan of `settings` over `g`, shaded by `processes` processes of
+// `lanes` lanes each (batch_lanes.h): with more than one writer in all, each
+// database is written through staging databases.
+// Throws InputError for what is refused before any shading: no such reader,
+// a database that cannot be opened, an empty selection, a node reading what
+// is written entry by entry, a database written over the one read, two
+// entries writing one file.
+Plan planBatch(const Graph& g, const BatchSettings& settings, EvaluatorOptions options, int processes, int lanes);
 
 }  // namespace darkroom::workflows::batch

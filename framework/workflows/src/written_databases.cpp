@@ -99,8 +99,9 @@ bool ownStagingFolder(const DatabaseSink& sink) {
     const auto st = fs::symlink_status(folder, ec);
     if (!fs::exists(st)) return false;
     if (!fs::is_directory(st) || !fs::is_regular_file(fs::symlink_status(folder / workflows::kStagingMarker, ec)))
-        throw Error(fmt::format("{} exists and Darkroom did not make it (no {} inside); runs over MPI ranks stage "
-                                "their entries there, so move it away (nothing in it was touched)",
+        throw Error(fmt::format("{} exists and Darkroom did not make it (no {} inside); runs over MPI ranks or "
+                                "with several entries in flight stage their entries there, so move it away "
+                                "(nothing in it was touched)",
                                 folder.string(), workflows::kStagingMarker));
     return true;
 }
@@ -130,19 +131,19 @@ void prepare(const DatabaseSink& sink) {
         checkSamePipeline(sink, part.string());
     }
     if (sink.mode == "resume") {
-        mergeStagedEntries(sink);
+        mergeStagedEntries(sink, false);
         return;
     }
     const std::size_t staged = workflows::readStagedDatabases(stagingFolder(sink)).entries.size();
     if (sink.mode != "overwrite" && staged > 0)
-        throw Error(fmt::format("database {}: an interrupted run over MPI ranks left {} entries staged in {}; "
+        throw Error(fmt::format("database {}: an interrupted run left {} entries staged in {}; "
                                 "set mode to resume to complete the database with them, or to overwrite to "
                                 "start afresh",
                                 sink.database, staged, folder.string()));
     fs::remove_all(folder);
 }
 
-void merge(const DatabaseSink& sink) {
+void merge(const DatabaseSink& sink, bool keepWritten) {
     const fs::path folder = stagingFolder(sink);
     if (!ownStagingFolder(sink)) return;
     workflows::StagedEntries staged = workflows::readStagedDatabases(stagingFolder(sink));
@@ -153,6 +154,10 @@ void merge(const DatabaseSink& sink) {
         o.resume = mode.resume;
         o.overwriteAdvice = mode.overwriteAdvice;
         o.resumeAdvice = mode.resumeAdvice;
+        if (keepWritten) {
+            o.overwrite = false;
+            o.resume = true;
+        }
         CinemaWriter w(sink.database, staged.columns, o);
         // As the node does alone: a resumed database keeps the entries it has.
         std::vector<CinemaStagedEntry> adopt;
@@ -197,7 +202,7 @@ void beginStaging(const DatabaseSink& sink) {
     if (ownStagingFolder(sink)) return;
     fs::create_directories(folder);
     writeFileAtomic((folder / workflows::kStagingMarker).string(),
-                    "Darkroom stages the entries of " + sink.database + " here during a run over MPI ranks.\n");
+                    "Darkroom stages the entries of " + sink.database + " here during a run over MPI ranks or with several entries in flight.\n");
 }
 
 }  // namespace
@@ -209,8 +214,8 @@ void prepareDatabase(const DatabaseSink& sink, bool overRanks) {
     });
 }
 
-void mergeStagedEntries(const DatabaseSink& sink) {
-    withFileErrors([&] { merge(sink); });
+void mergeStagedEntries(const DatabaseSink& sink, bool keepWritten) {
+    withFileErrors([&] { merge(sink, keepWritten); });
 }
 
 std::set<std::string> entriesKeptByResume(const DatabaseSink& sink) {

@@ -15,6 +15,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 
 using namespace darkroom;
@@ -52,11 +53,11 @@ struct Batch {
         workflows::describeUpstreamPipelines(g);
         return g;
     }
-    workflows::BatchSummary shade(workflows::BatchSettings s = {}) {
+    workflows::BatchSummary shade(workflows::BatchSettings s = {}, const workflows::BatchCallbacks& cb = {}) {
         if (s.reader.empty()) s.reader = "read";
         Evaluator ev(options);
         SingleProcess alone;
-        return workflows::shadeEntries(graph, ev, options, s, alone, {});
+        return workflows::shadeEntries(graph, ev, options, s, alone, cb);
     }
 };
 
@@ -132,16 +133,56 @@ TEST(BatchWorkflow, TheReaderGetsEachEntrysRowNumberOverItsParameters) {
 }
 
 TEST(BatchWorkflow, AFailingEntryIsReportedWithTheEntryAndTheRestIsKept) {
-    Batch b;
-    test::writeText(b.dir.file("source.cdb/time=2.exr"), "not an image");
-    const auto summary = b.shade();
-    ASSERT_TRUE(summary.failure);
-    EXPECT_FALSE(summary.failedElsewhere);
-    try {
-        std::rethrow_exception(summary.failure);
-    } catch (const Error& e) {
-        EXPECT_THAT(e.what(), HasSubstr("entry time=2: "));
+    for (const int inFlight : {1, 3}) {
+        SCOPED_TRACE("entries in flight: " + std::to_string(inFlight));
+        Batch b;
+        test::writeText(b.dir.file("source.cdb/time=2.exr"), "not an image");
+        workflows::BatchSettings s;
+        s.inFlight = inFlight;
+        const auto summary = b.shade(s);
+        ASSERT_TRUE(summary.failure);
+        EXPECT_FALSE(summary.failedElsewhere);
+        try {
+            std::rethrow_exception(summary.failure);
+        } catch (const Error& e) {
+            EXPECT_THAT(e.what(), HasSubstr("entry time=2: "));
+        }
+        // The entry before it is in the database (entries in flight beside it
+        // may be too, and their staging is merged); a resume completes it.
+        const CinemaDatabase out = CinemaDatabase::open(b.dir.file("out/shaded.cdb"));
+        EXPECT_TRUE(fs::is_regular_file(b.dir.file("out/shaded.cdb/time=1.exr")));
+        EXPECT_FALSE(fs::exists(b.dir.file("out/shaded.cdb/time=2.exr")));
+        EXPECT_FALSE(fs::exists(b.dir.file("out/shaded.cdb.staging")));
+        if (inFlight == 1) {
+            EXPECT_EQ(out.rowCount(), 1u);
+        }
     }
-    // The entry before it is in the database; a resume completes it.
-    EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 1u);
+}
+
+// With entries in flight, the progress is every finished entry and each
+// lane's part of the one it shades: it never goes back, and the callbacks
+// come one at a time.
+TEST(BatchWorkflow, ProgressWithEntriesInFlightNeverGoesBack) {
+    Batch b;
+    fs::remove_all(b.dir.file("source.cdb"));
+    test::writeTimeSeriesDatabase(b.dir.file("source.cdb"), {1, 2, 3, 4, 5, 6, 7, 8, 9});
+    std::vector<double> seen;
+    std::atomic<int> inside{0};
+    bool overlapped = false;
+    workflows::BatchCallbacks cb;
+    cb.progress = [&](double f, const std::string&) {
+        overlapped = overlapped || inside.fetch_add(1) != 0;
+        seen.push_back(f);
+        inside.fetch_sub(1);
+    };
+    workflows::BatchSettings s;
+    s.inFlight = 3;
+    const auto summary = b.shade(s, cb);
+    ASSERT_FALSE(summary.failure);
+    EXPECT_EQ(summary.inFlight, 3);
+    EXPECT_EQ(CinemaDatabase::open(b.dir.file("out/shaded.cdb")).rowCount(), 9u);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_FALSE(overlapped);
+    for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_GE(seen[k], seen[k - 1]) << "at call " << k;
+    EXPECT_LE(seen.back(), 1.0);
 }

@@ -18,7 +18,12 @@
 // (written_databases.h). The entries a process shades are one sequence of
 // its evaluator (Evaluator::beginSequence): a CinemaWriter holds its database
 // across them and lets it go at the end, before the merge. A resume skips entries whose outputs all exist and
-// that every database written in mode resume holds. The index (a CSV of the
+// that every database written in mode resume holds. In one process several
+// entries are in flight at once (BatchSettings::inFlight, batch_lanes.h):
+// each lane shades whole entries with a copy of the graph and an evaluator
+// of its own, and writes its databases through a staging database of its
+// own, merged as over ranks; the outputs are those of one entry at a time,
+// byte for byte. The index (a CSV of the
 // entries and the files written for each) is the same whatever the number of
 // processes.
 #include <darkroom/export.h>
@@ -37,19 +42,31 @@ struct BatchSettings {
     std::string where;   // the entries to shade (--where syntax); empty: all
     std::string index;   // the index CSV to write; empty: none
     bool resume = false;
+    // Entries shaded at once in this process, each with its own copy of the
+    // graph and evaluator (reading the next while shading and writing the
+    // previous ones); memory grows with it. 0: automatic (3). Under several
+    // processes each takes one at a time: the ranks overlap one another.
+    int inFlight = 0;
 };
 
 struct BatchCallbacks {
-    // Runs the graph once for `sinks` ("entry phi=30 (2 of 12)", "after the
-    // last entry": the title, for profiles). Default: Evaluator::run.
-    std::function<void(const std::string& title, const std::vector<std::string>& sinks)> evaluate;
-    // On the lead: the fraction of all entries done (every process's) and the entry.
+    // Runs `graph` with `evaluator` once for `sinks` ("entry phi=30 (2 of
+    // 12)", "after the last entry": the title, for profiles). Default:
+    // Evaluator::run. With entries in flight, called from several threads
+    // at once, each with its own evaluator and graph: what it prints or
+    // records must take a lock.
+    std::function<void(Evaluator& evaluator, const Graph& graph, const std::string& title,
+                       const std::vector<std::string>& sinks)>
+        evaluate;
+    // On the lead: the fraction of all entries done (every process's) and
+    // the entry. Called one at a time, from any thread.
     std::function<void(double, const std::string&)> progress;
 };
 
 struct BatchSummary {
     std::size_t selected = 0;  // entries the selection gave
     std::size_t kept = 0;      // entries a resume kept
+    int inFlight = 1;          // entries this process had in flight at once
     // On the lead: entries shaded now, per process in rank order.
     std::vector<std::size_t> shadedPerProcess;
     // What failed on this process: an entry ("entry phi=30: ..."), a graph

@@ -50,8 +50,10 @@ DARKROOM_API void prepareDatabase(const DatabaseSink& sink, bool overRanks);
 // After every rank has finished, by one process: adopts every staged entry
 // into the database, opened in the node's mode (resume keeps the entries it
 // has), and removes the staging folder. Nothing staged: nothing changes.
-// Throws Error; what it could not adopt stays staged for a resume.
-DARKROOM_API void mergeStagedEntries(const DatabaseSink& sink);
+// `keepWritten`: the database was written in this run (by the first lane of
+// a lone process, batch_lanes.h) and is opened as a resume, keeping its
+// entries. Throws Error; what it could not adopt stays staged for a resume.
+DARKROOM_API void mergeStagedEntries(const DatabaseSink& sink, bool keepWritten = false);
 
 // The entries (file names without extension, as CinemaDatabase::entryName
 // gives them) that the database holds complete, in the node's format, and a
