@@ -4,15 +4,19 @@
 // 1,065,353,215 differ (4 s on 2 cores, too long beside a sanitizer). Here
 // are the ones where a table can go wrong — each threshold and its
 // neighbours, each bucket's edges — and an even spread of the rest.
+#include "eight_bit.h"
 #include "srgb_code.h"
 
+#include <darkroom/buffer.h>
 #include <darkroom/srgb.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 using darkroom::io::srgbCode;
 
@@ -55,4 +59,33 @@ TEST(SrgbCode, BucketEdgesAndAnEvenSpreadAgreeWithThePow) {
     EXPECT_EQ(srgbCode(1e-30f), 0);
     EXPECT_EQ(srgbCode(std::nextafter(1.0f, 0.0f)), 255);
     EXPECT_EQ(srgbCode(0.5f), 188);  // the sRGB code of half linear light
+}
+
+// The whole-image encoder (eight_bit.cpp) inlines the table and rounds alpha
+// without lround: both must give the codes of the plain formulas, at every
+// rounding edge of alpha (k + 0.5) / 255 and its neighbours, every sRGB
+// threshold's neighbours, and the special values.
+TEST(SrgbCode, TheImageEncoderGivesThePlainFormulasCodes) {
+    std::vector<float> values{0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::nanf(""), INFINITY, -INFINITY, 1e-30f, 0.5f};
+    for (int k = 0; k < 255; ++k) {
+        float edge = (float(k) + 0.5f) / 255.0f;
+        for (int d = 0; d < 4; ++d) edge = std::nextafter(edge, 0.0f);
+        for (int d = 0; d < 8; ++d, edge = std::nextafter(edge, 1.0f)) values.push_back(edge);
+    }
+    for (std::uint32_t bits = 1; bits < kOne; bits += 104729) values.push_back(std::bit_cast<float>(bits));
+    const int n = int(values.size());
+    auto image = darkroom::makeCpuBuffer(n, 1, {{"Y", darkroom::ChannelType::Float32}, {"A", darkroom::ChannelType::Float32}});
+    std::copy(values.begin(), values.end(), image->writeFloat("Y"));
+    std::copy(values.begin(), values.end(), image->writeFloat("A"));
+    const auto pixels = darkroom::io::encodeEightBit(*image, "test.png", {}, true);
+    ASSERT_EQ(pixels.channels, 2);
+    const auto plain = [](float v, bool alpha) {
+        if (!(v > 0.0f)) return 0;
+        if (v >= 1.0f) return 255;
+        return alpha ? int(std::lround(v * 255.0f)) : expected(std::bit_cast<std::uint32_t>(v));
+    };
+    for (int i = 0; i < n; ++i) {
+        EXPECT_EQ(int(pixels.data[std::size_t(2 * i)]), plain(values[std::size_t(i)], false)) << values[std::size_t(i)];
+        EXPECT_EQ(int(pixels.data[std::size_t(2 * i + 1)]), plain(values[std::size_t(i)], true)) << values[std::size_t(i)];
+    }
 }

@@ -35,6 +35,20 @@ std::vector<std::string> defaultChannels(const Buffer& image, const std::string&
     return ch;
 }
 
+// The 8-bit code of alpha, stored linearly: lround(v * 255), NaN and v <= 0
+// -> 0. For m >= 0, lround(m) is floor(m + 0.5) computed exactly in double.
+inline unsigned char linearCode(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return (unsigned char)(int)(double(v * 255.0f) + 0.5);
+}
+
+inline unsigned char sRgbCode(const SrgbCodeTable& srgb, float v) {
+    if (!(v > 0.0f)) return 0;  // also NaN
+    if (v >= 1.0f) return 255;
+    return srgb.code(v);
+}
+
 }  // namespace
 
 EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
@@ -53,20 +67,24 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
         if (!p) fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " + channelListText(image, true));
         src.push_back(p);
     }
-    // Linear -> sRGB code value (round to nearest), NaN -> 0; alpha is stored linearly.
-    auto encode = [](float v, bool alpha) -> unsigned char {
-        if (!(v > 0.0f)) return 0;  // also NaN
-        if (v >= 1.0f) return 255;
-        return alpha ? (unsigned char)std::lround(v * 255.0f) : srgbCode(v);
-    };
     const std::size_t pixels = image.pixelCount();
     const int n = out.channels;
     out.data.resize(pixels * std::size_t(n));
-    // sRGB encoding by thresholds (srgb_code.h), rows in parallel.
+    // Linear -> sRGB code value (round to nearest) by thresholds
+    // (srgb_code.h), NaN -> 0; alpha is stored linearly. Rows in parallel,
+    // one channel at a time along a row, so each loop reads one plane.
+    const SrgbCodeTable& srgb = srgbCodeTable();
     const std::size_t w = std::size_t(image.width());
     tbb::parallel_for(0, image.height(), [&](int y) {
-        for (std::size_t p = std::size_t(y) * w; p < std::size_t(y + 1) * w; ++p)
-            for (int c = 0; c < n; ++c) out.data[p * n + c] = encode(src[std::size_t(c)][p], out.alpha && c == n - 1);
+        unsigned char* row = out.data.data() + std::size_t(y) * w * std::size_t(n);
+        for (int c = 0; c < n; ++c) {
+            const float* s = src[std::size_t(c)] + std::size_t(y) * w;
+            unsigned char* d = row + c;
+            if (out.alpha && c == n - 1)
+                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = linearCode(s[x]);
+            else
+                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = sRgbCode(srgb, s[x]);
+        }
     });
     return out;
 }

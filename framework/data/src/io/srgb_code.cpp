@@ -13,7 +13,7 @@ namespace darkroom::io {
 namespace {
 
 constexpr std::uint32_t kOne = 0x3f800000u;  // the bits of 1.0f
-constexpr int kBucketShift = 16;
+constexpr int kBucketShift = SrgbCodeTable::kBucketShift;
 
 int exactCode(std::uint32_t bits) {
     return int(std::lround(linearToSrgb(std::bit_cast<float>(bits)) * 255.0f));
@@ -45,20 +45,12 @@ struct Tables {
     }
 };
 
-const Tables& tables() {
-    static const Tables t;  // some 24,000 pows, once per process
-
-    return t;
-}
-
 }  // namespace
 
-std::uint8_t srgbCode(float v) {
-    const Tables& t = tables();
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
-    int code = t.bucketStart[bits >> kBucketShift];
-    while (bits >= t.threshold[std::size_t(code) + 1]) ++code;
-    return std::uint8_t(code);
+const SrgbCodeTable& srgbCodeTable() {
+    static const Tables t;
+    static const SrgbCodeTable view{t.threshold.data(), t.bucketStart.data()};
+    return view;
 }
 
 }  // namespace darkroom::io
