@@ -121,6 +121,7 @@ public:
         });
         QObject::connect(w_.evaluation(), &editor::Evaluation::finished, [this](const editor::EvalResult& r) {
             if (r.level > 0) lastPreview_ = r.profile;
+            else lastFull_ = r.profile;
             computed_.push_back({r.generation, r.level, r.profile.seconds * 1000.0, clock_.nsecsElapsed() / 1e6});
         });
         clock_.start();
@@ -243,7 +244,7 @@ private:
     std::vector<Computed> computed_;
 
 public:
-    editor::FrameProfile lastPreview_;
+    editor::FrameProfile lastPreview_, lastFull_;
 };
 
 QString levelsText(const std::vector<int>& levels) {
@@ -380,6 +381,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "frame: + a number field %.1f ms\n", frameTime([&] {
             w.scene()->nodeItem("ao")->paramWidget("radius")->setValue(darkroom::Value(0.08 + 0.001 * (++k % 5)));
         }));
+        // What a new full-resolution image costs the view: the same buffer
+        // set again is uploaded and mapped again.
+        const darkroom::BufferPtr shown = w.renderView()->image();
+        std::fprintf(stderr, "frame: + a new %d x %d image (upload, mapping) %.1f ms\n", shown->width(),
+                     shown->height(), frameTime([&] { w.renderView()->setImage(shown); }));
         for (int i = 0; i < 3; ++i) {
             QElapsedTimer t;
             t.start();
@@ -430,6 +436,9 @@ int main(int argc, char** argv) {
         if (!bench.fullFrame(t.node, t.port, t.fullValue, &full, &fullCompute)) return 1;
         std::printf("| %s | without preview | 1 | 1 | full | – | %.1f | – | – | (%.0f) |\n", qPrintable(t.label), full,
                     fullCompute);
+        if (qEnvironmentVariableIsSet("BENCH_EDITOR_DETAIL"))
+            for (const auto& n : bench.lastFull_.nodes)
+                if (n.ran) std::fprintf(stderr, "  full frame: %-28s %.2f ms\n", n.node.c_str(), n.seconds * 1e3);
         std::printf("| %s | **warm drags** | %zu | | | | **%.1f** | %.1f | %.1f | **%.0f** |\n", qPrintable(t.label),
                     warm.size(), percentile(warm, 0.5), percentile(warm, 0.9), percentile(warm, 1.0),
                     percentile(warmSettle, 0.5));

@@ -61,6 +61,7 @@ private slots:
     void cleanup();
     void shaderMappingMatchesTheCpuMapping();
     void panAndZoomUploadNothing();
+    void largeImageMappedAtTheShownSize();
     void probeReadsTheBuffer();
     void previewCoversTheFullImageArea();
 
@@ -140,6 +141,44 @@ void ViewTest::panAndZoomUploadNothing() {
     view_->grabFramebuffer();
     QCOMPARE(view_->mappings(), mappings + 1);
     QCOMPARE(view_->uploads(), uploads + 1);  // Z
+}
+
+void ViewTest::largeImageMappedAtTheShownSize() {
+    // 1600 x 1200 in a 400 x 300 view: a quarter of each side is shown, so
+    // every 4th pixel is mapped. Blocks of 40 x 40 pixels of one colour
+    // each: the reduced mapping shows the CPU mapping's colour in each.
+    constexpr int w = 1600, h = 1200, block = 40;
+    auto big = test::makeImage(w, h, {"R", "G", "B"}, [](int x, int y, int c) {
+        return c == 0 ? float(x / block) / (w / block) : c == 1 ? float(y / block) / (h / block) : 0.3f;
+    });
+    view_->setImage(big);
+    view_->setMode("Colour");
+    view_->fit();
+    const QImage fb = view_->grabFramebuffer();
+    QCOMPARE(view_->mappedLevel(), 2);
+    const QImage cpu = editor::renderDisplay(*big, "Colour");
+    const double zoom = view_->zoom();
+    for (int by = 0; by < h / block; by += 7)
+        for (int bx = 0; bx < w / block; bx += 5) {
+            const QPointF centre((bx + 0.5) * block, (by + 0.5) * block);
+            const QColor want(cpu.pixel(centre.toPoint())), got(fb.pixel((view_->offset() + centre * zoom).toPoint()));
+            QVERIFY2(std::abs(want.red() - got.red()) <= 2 && std::abs(want.green() - got.green()) <= 2 &&
+                         std::abs(want.blue() - got.blue()) <= 2,
+                     qPrintable(QStringLiteral("block %1,%2: %3 against %4").arg(bx).arg(by).arg(got.name(), want.name())));
+        }
+    // Zoomed in to 1:1 the full image is mapped, once; then pan and zoom
+    // map nothing again.
+    const int mappings = view_->mappings(), uploads = view_->uploads();
+    QTest::keyClick(view_.get(), Qt::Key_1);
+    view_->grabFramebuffer();
+    QCOMPARE(view_->mappings(), mappings + 1);
+    QCOMPARE(view_->mappedLevel(), 0);
+    view_->fit();
+    view_->grabFramebuffer();
+    view_->setView(2.0, QPointF(-100, -50));
+    view_->grabFramebuffer();
+    QCOMPARE(view_->mappings(), mappings + 1);
+    QCOMPARE(view_->uploads(), uploads);
 }
 
 void ViewTest::probeReadsTheBuffer() {

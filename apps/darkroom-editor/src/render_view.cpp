@@ -35,6 +35,8 @@ int RenderView::uploads() const { return program_->uploads(); }
 
 int RenderView::mappings() const { return program_->mappings(); }
 
+int RenderView::mappedLevel() const { return program_->mappedLevel(); }
+
 QSizeF RenderView::fullSize() const {
     if (!image_) return {};
     const double f = std::ldexp(1.0, level_);

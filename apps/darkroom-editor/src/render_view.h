@@ -41,6 +41,8 @@ public:
     // and zoom do neither).
     int uploads() const;
     int mappings() const;
+    // The reduction the shown mapping was made at (image_program.h).
+    int mappedLevel() const;
     // The OpenGL problem, when the view cannot draw.
     const QString& glError() const { return glError_; }
     // A message written over the view (an evaluation error naming the
