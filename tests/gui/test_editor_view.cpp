@@ -63,6 +63,7 @@ private slots:
     void panAndZoomUploadNothing();
     void largeImageMappedAtTheShownSize();
     void probeReadsTheBuffer();
+    void inputThroughTheNativeWindow();
     void previewCoversTheFullImageArea();
 
 private:
@@ -190,6 +191,29 @@ void ViewTest::probeReadsTheBuffer() {
     QVERIFY2(text.startsWith("x 3, y 2 |"), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral(" R %1 ").arg(3.0 / 39.0, 0, 'g', 6)), qPrintable(text));
     QVERIFY2(text.contains(" id 0"), qPrintable(text));
+}
+
+void ViewTest::inputThroughTheNativeWindow() {
+    // Events as the window system delivers them, to the native window the
+    // frames are drawn into: they pan, zoom and probe as on the widget.
+    QWindow* window = view_->surface();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QCOMPARE(window->size(), view_->size());
+    view_->setView(4.0, QPointF(10, 10));
+    QSignalSpy probed(view_.get(), &RenderView::probed);
+    QTest::mouseMove(window, QPoint(10 + 4 * 3 + 2, 10 + 4 * 2 + 1));  // pixel (3, 2)
+    QTRY_VERIFY(!probed.isEmpty());
+    QVERIFY2(probed.last().at(0).toString().startsWith("x 3, y 2 |"), qPrintable(probed.last().at(0).toString()));
+    QTest::mousePress(window, Qt::LeftButton, {}, QPoint(100, 100));
+    QTest::mouseMove(window, QPoint(130, 120));
+    QTest::mouseRelease(window, Qt::LeftButton, {}, QPoint(130, 120));
+    QCOMPARE(view_->offset(), QPointF(40, 30));
+    QTest::keyClick(window, Qt::Key_1);
+    QCOMPARE(view_->zoom(), 1.0);
+    // Frames reach the screen: the swap is announced.
+    QSignalSpy swapped(view_.get(), &RenderView::frameSwapped);
+    view_->requestFrame();
+    QVERIFY(swapped.wait(5000));
 }
 
 void ViewTest::previewCoversTheFullImageArea() {
