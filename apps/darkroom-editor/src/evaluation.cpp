@@ -65,7 +65,7 @@ int Evaluation::chooseLevel(double predicted) const {
     // quarters it. The correction carries what previews really took.
     const double full = std::max(predicted, 1e-6) * previewCorrection_;
     for (int k = 1; k < kMaxLevel; ++k)
-        if (full / std::pow(4.0, k) <= kBudgetShare * budget_) return std::min(k + levelBias_, kMaxLevel);
+        if (full / std::pow(4.0, k) <= kBudgetShare * budget_) return std::max(k, floorLevel_);
     return kMaxLevel;
 }
 
@@ -123,16 +123,14 @@ void Evaluation::framePresented(std::uint64_t generation, int level) {
     if (latencies_.size() < kLatencyFrames) return;
     const double late = median(latencies_);
     latencies_.clear();
-    if (late > kLatencyShare * budget_ * 1000.0 && level_ < kMaxLevel) {
-        ++level_;
-        levelBias_ = std::min(levelBias_ + 1, kMaxLevel);
-    }
+    if (late > kLatencyShare * budget_ * 1000.0 && level_ < kMaxLevel) ++level_;
 }
 
 void Evaluation::endDrag() {
-    // Previews well in time: the next drag may try the predicted size again.
-    if (!dragLatencies_.empty() && median(dragLatencies_) < 0.5 * kLatencyShare * budget_ * 1000.0 && levelBias_ > 0)
-        --levelBias_;
+    // Previews well in time: the next drag may try one size finer.
+    if (dragLatencies_.empty()) return;
+    const bool quick = median(dragLatencies_) < 0.5 * kLatencyShare * budget_ * 1000.0;
+    floorLevel_ = std::max(0, quick ? level_ - 1 : level_);
     dragLatencies_.clear();
 }
 

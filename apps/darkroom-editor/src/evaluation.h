@@ -16,8 +16,10 @@
 //    preview for the worker, then its own preview, then the window's frame,
 //    so the compute budget alone does not bound input-to-pixels. Frames
 //    later than 1.5 budgets after their edit (median of 4) make the rest of
-//    the drag one level coarser, and the next drags start there too until
-//    a drag's frames come in under half that;
+//    the drag one level coarser. The next drag starts no finer than the
+//    last one ended (one level finer if its frames came in under half
+//    that): the prediction is noisy on a loaded machine, and every new size
+//    resamples the sources, so trying finer sizes costs frames;
 //  - after a slow full-resolution frame the preview evaluator is warmed in
 //    the background (sources read and downsampled), so the first drag step
 //    does not wait for the sources to be read.
@@ -86,7 +88,7 @@ private:
     int settleDelayMs_ = 150;
     double previewCorrection_ = 1.0;  // measured preview time / predicted, smoothed
     int level_ = 0;                   // preview level of the current drag (0: none chosen)
-    int levelBias_ = 0;               // levels added to the predicted one: previews reached the screen late
+    int floorLevel_ = 0;              // the coarsest level a drag starts at: where the last drag ended
     QElapsedTimer clock_;
     std::map<std::uint64_t, double> requestedAt_;  // ms on clock_, previews not yet on screen
     std::vector<double> latencies_;                // ms from edit to screen, frames at level_ not yet judged
