@@ -1,7 +1,7 @@
 // The editor's interactive figure: how long from a drag event on a value to
 // new pixels on screen, and from the end of the drag to the settled frame
 // at full resolution, on the demo pipeline (docs/examples/demo.yaml) with
-// the demo scene captured at 1024 x 1024.
+// the demo scene captured at 1024 x 1024 (--size: 2048, 2048x1024, ...).
 //
 // Driven with QTest mouse events through the graph view, as a hand drags a
 // number field (press, moves every --interval ms, release). "New pixels on
@@ -30,6 +30,7 @@
 #include <QGraphicsProxyWidget>
 #include <QLineEdit>
 #include <QProcess>
+#include <QScreen>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTest>
@@ -42,7 +43,7 @@ namespace {
 
 struct Options {
     QString work;
-    int size = 1024;
+    int width = 1024, height = 1024;
     int steps = 40;
     int interval = 16;  // ms between moves: a 60 Hz hand
     int pixelsPerStep = 3;
@@ -81,26 +82,32 @@ bool fail(const QString& m) {
     return false;
 }
 
-// The three demo scene files at size x size, one camera (phi 45, theta 40,
-// the view demo.yaml reads), captured with the runner as scripts/demo.sh does.
+// Each size has its folder under --work: the captured scenes (out/demo/)
+// and the pipeline copy (pipelines/demo/demo.yaml, which reads ../../out/demo).
+QString sizeFolder(const Options& o) { return o.work + QStringLiteral("/demo-%1x%2").arg(o.width).arg(o.height); }
+
+// The three demo scene files at width x height, one camera (phi 45, theta
+// 40, the view demo.yaml reads), captured with the runner as scripts/demo.sh
+// does.
 bool captureDemo(const Options& o) {
-    const QString out = o.work + "/out/demo";
-    const QString stamp = out + "/captured-" + QString::number(o.size);
+    const QString root = sizeFolder(o);
+    const QString out = root + "/out/demo";
+    const QString stamp = out + "/captured";
     if (QFile::exists(stamp)) return true;
     QDir().mkpath(out);
-    QDir().mkpath(o.work + "/scenes");
+    QDir().mkpath(root + "/scenes");
     for (const char* part : {"surface", "flow", "particles"}) {
         QFile in(QStringLiteral(DARKROOM_SOURCE_DIR "/docs/examples/demo/%1.yaml").arg(part));
         if (!in.open(QIODevice::ReadOnly)) return fail("cannot read " + in.fileName());
         QString text = QString::fromUtf8(in.readAll());
-        const QString size = QStringLiteral("resolution: [%1, %1]").arg(o.size);
+        const QString size = QStringLiteral("resolution: [%1, %2]").arg(o.width).arg(o.height);
         for (const auto& [from, to] : {std::pair<QString, QString>{"resolution: [768, 768]", size},
                                        {"phi: [0, 45, 90, 135, 180, 225, 270, 315]", "phi: [45]"},
                                        {"theta: [15, 40]", "theta: [40]"}}) {
             if (!text.contains(from)) return fail(in.fileName() + " no longer holds '" + from + "'; update the benchmark");
             text.replace(from, to);
         }
-        const QString scene = o.work + "/scenes/" + part + ".yaml";
+        const QString scene = root + "/scenes/" + part + ".yaml";
         QFile f(scene);
         if (!f.open(QIODevice::WriteOnly) || f.write(text.toUtf8()) < 0) return fail("cannot write " + scene);
         f.close();
@@ -121,6 +128,7 @@ public:
         });
         QObject::connect(w_.evaluation(), &editor::Evaluation::finished, [this](const editor::EvalResult& r) {
             if (r.level > 0) lastPreview_ = r.profile;
+            else lastFull_ = r.profile;
             computed_.push_back({r.generation, r.level, r.profile.seconds * 1000.0, clock_.nsecsElapsed() / 1e6});
         });
         clock_.start();
@@ -243,7 +251,7 @@ private:
     std::vector<Computed> computed_;
 
 public:
-    editor::FrameProfile lastPreview_;
+    editor::FrameProfile lastPreview_, lastFull_;
 };
 
 QString levelsText(const std::vector<int>& levels) {
@@ -262,7 +270,7 @@ int main(int argc, char** argv) {
     cli.setApplicationDescription("Input-to-pixels benchmark of darkroom-editor on the demo pipeline");
     cli.addHelpOption();
     cli.addOption({"work", "Folder for the captured demo and the pipeline copy", "DIR", "bench-editor"});
-    cli.addOption({"size", "Capture resolution (square)", "PX", "1024"});
+    cli.addOption({"size", "Capture resolution: PX (square) or WxH", "PX", "1024"});
     cli.addOption({"steps", "Mouse moves per drag", "N", "40"});
     cli.addOption({"interval", "Milliseconds between moves", "MS", "16"});
     cli.addOption({"drags", "Drags per value (the first, right after opening, is reported apart)", "N", "3"});
@@ -272,15 +280,18 @@ int main(int argc, char** argv) {
     cli.process(app);
     Options o;
     o.work = QDir(cli.value("work")).absolutePath();
-    o.size = cli.value("size").toInt();
+    const QStringList size = cli.value("size").split('x');
+    o.width = size.value(0).toInt();
+    o.height = size.size() > 1 ? size.value(1).toInt() : o.width;
+    if (o.width <= 0 || o.height <= 0) return fail("--size wants PX or WxH"), 2;
     o.steps = cli.value("steps").toInt();
     o.interval = cli.value("interval").toInt();
     o.drags = std::max(2, cli.value("drags").toInt());
 
     if (!captureDemo(o)) return 1;
     // demo.yaml reads ../../out/demo/*.cdb: the copy sits two folders down.
-    const QString pipeline = o.work + "/pipelines/demo/demo.yaml";
-    QDir().mkpath(o.work + "/pipelines/demo");
+    const QString pipeline = sizeFolder(o) + "/pipelines/demo/demo.yaml";
+    QDir().mkpath(sizeFolder(o) + "/pipelines/demo");
     QFile::remove(pipeline);
     if (!QFile::copy(DARKROOM_SOURCE_DIR "/docs/examples/demo.yaml", pipeline)) return fail("cannot copy demo.yaml"), 1;
 
@@ -335,8 +346,12 @@ int main(int argc, char** argv) {
         if (!bench.waitSettled(w.evaluation()->generation())) return 1;
         QTest::qWait(300);
         w.statusBar()->clearMessage();
-        w.renderView()->repaint();
-        if (!w.grab().save(cli.value("screenshot"))) return fail("cannot write " + cli.value("screenshot")), 1;
+        w.renderView()->renderNow();
+        // What the X server shows: the render view is a native OpenGL
+        // window, which QWidget::grab() does not see.
+        QCoreApplication::processEvents();
+        if (!w.screen()->grabWindow(w.winId()).save(cli.value("screenshot")))
+            return fail("cannot write " + cli.value("screenshot")), 1;
         std::printf("wrote %s\n", qPrintable(cli.value("screenshot")));
         w.document()->undoStack()->setClean();
         return 0;
@@ -357,11 +372,11 @@ int main(int argc, char** argv) {
             std::vector<double> t;
             for (int i = 0; i < 8; ++i) {
                 bool swapped = false;
-                auto c = QObject::connect(w.renderView(), &QOpenGLWidget::frameSwapped, [&] { swapped = true; });
+                auto c = QObject::connect(w.renderView(), &editor::RenderView::frameSwapped, [&] { swapped = true; });
                 QElapsedTimer e;
                 e.start();
                 change();
-                w.renderView()->update();
+                w.renderView()->requestFrame();
                 while (!swapped) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 5);
                 t.push_back(e.nsecsElapsed() / 1e6);
                 QObject::disconnect(c);
@@ -380,13 +395,18 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "frame: + a number field %.1f ms\n", frameTime([&] {
             w.scene()->nodeItem("ao")->paramWidget("radius")->setValue(darkroom::Value(0.08 + 0.001 * (++k % 5)));
         }));
+        // What a new full-resolution image costs the view: the same buffer
+        // set again is uploaded and mapped again.
+        const darkroom::BufferPtr shown = w.renderView()->image();
+        std::fprintf(stderr, "frame: + a new %d x %d image (upload, mapping) %.1f ms\n", shown->width(),
+                     shown->height(), frameTime([&] { w.renderView()->setImage(shown); }));
         for (int i = 0; i < 3; ++i) {
             QElapsedTimer t;
             t.start();
             w.graphView()->viewport()->repaint();
             const double graph = t.nsecsElapsed() / 1e6;
             t.restart();
-            w.renderView()->repaint();
+            w.renderView()->renderNow();
             const double render = t.nsecsElapsed() / 1e6;
             t.restart();
             w.repaint();
@@ -394,7 +414,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "repaint: graph view %.1f ms, render view %.1f ms, window %.1f ms\n", graph, render, window);
         }
     }
-    std::printf("# darkroom-editor input-to-pixels, demo pipeline at %d x %d\n\n", o.size, o.size);
+    std::printf("# darkroom-editor input-to-pixels, demo pipeline at %d x %d\n\n", o.width, o.height);
     std::printf("opened and evaluated at full resolution in %.0f ms (cold: reading the three databases)\n", openMs);
     std::printf("drag: %d moves of %d px every %d ms; %d drags per value, the first right after opening\n\n",
                 o.steps, o.pixelsPerStep, o.interval, o.drags);
@@ -430,6 +450,9 @@ int main(int argc, char** argv) {
         if (!bench.fullFrame(t.node, t.port, t.fullValue, &full, &fullCompute)) return 1;
         std::printf("| %s | without preview | 1 | 1 | full | – | %.1f | – | – | (%.0f) |\n", qPrintable(t.label), full,
                     fullCompute);
+        if (qEnvironmentVariableIsSet("BENCH_EDITOR_DETAIL"))
+            for (const auto& n : bench.lastFull_.nodes)
+                if (n.ran) std::fprintf(stderr, "  full frame: %-28s %.2f ms\n", n.node.c_str(), n.seconds * 1e3);
         std::printf("| %s | **warm drags** | %zu | | | | **%.1f** | %.1f | %.1f | **%.0f** |\n", qPrintable(t.label),
                     warm.size(), percentile(warm, 0.5), percentile(warm, 0.9), percentile(warm, 1.0),
                     percentile(warmSettle, 0.5));

@@ -272,8 +272,9 @@ std::vector<double> reportBrushing(Bench& bench, editor::ExplorerPanel* ex, cons
                 percentile(all, 0.9), percentile(all, 1.0));
     {
         // The floor under every figure: one frame of the window, the plot
-        // repainted from its cached layers (the window holds the OpenGL
-        // render view, so llvmpipe composes all of it at every frame).
+        // repainted from its cached layers and flushed by the raster
+        // backing store (the render view is a native window of its own,
+        // render_surface.h: it is not composed with the rest).
         std::vector<double> floor;
         editor::ParallelCoordinates* plot = ex->plot();
         for (int i = 0; i < 30; ++i) {

@@ -5,7 +5,8 @@
 #   bench/editor/run_editor_bench.sh [BUILD_DIR] explorer [bench_explorer args...]
 # Needs a build configured with -DDARKROOM_BUILD_BENCH=ON. The first form
 # drags values on the demo pipeline (the demo scene is captured at
-# 1024 x 1024 into BUILD_DIR/bench-editor/ on the first run); the second
+# 1024 x 1024, or --size 2048, --size 2048x1024, into
+# BUILD_DIR/bench-editor/demo-WxH/ on the first run at that size); the second
 # brushes and scrolls the explorer on a generated ensemble of 10,000
 # entries (written into BUILD_DIR/bench-editor/ on the first run).
 set -eu

@@ -79,7 +79,7 @@ void clearSettings() {
 bool waitIdle(editor::MainWindow& w, int ms) {
     if (!QTest::qWaitFor([&] { return !w.evaluation()->busy(); }, ms)) return false;
     QCoreApplication::processEvents();
-    w.renderView()->repaint();
+    w.renderView()->renderNow();
     return true;
 }
 

@@ -137,7 +137,7 @@ void SpeedTest::previewWhileDraggingThenSettles() {
         QTest::mouseMove(s, p);
         QTest::qWait(30);
         if (!screenshotTaken && w_->renderView()->level() > 0) {
-            w_->renderView()->repaint();
+            w_->renderView()->renderNow();
             QVERIFY(guitest::screenshot(w_.get(), "speed-preview-while-dragging"));
             screenshotTaken = true;
         }

@@ -61,7 +61,9 @@ private slots:
     void cleanup();
     void shaderMappingMatchesTheCpuMapping();
     void panAndZoomUploadNothing();
+    void largeImageMappedAtTheShownSize();
     void probeReadsTheBuffer();
+    void inputThroughTheNativeWindow();
     void previewCoversTheFullImageArea();
 
 private:
@@ -142,6 +144,44 @@ void ViewTest::panAndZoomUploadNothing() {
     QCOMPARE(view_->uploads(), uploads + 1);  // Z
 }
 
+void ViewTest::largeImageMappedAtTheShownSize() {
+    // 1600 x 1200 in a 400 x 300 view: a quarter of each side is shown, so
+    // every 4th pixel is mapped. Blocks of 40 x 40 pixels of one colour
+    // each: the reduced mapping shows the CPU mapping's colour in each.
+    constexpr int w = 1600, h = 1200, block = 40;
+    auto big = test::makeImage(w, h, {"R", "G", "B"}, [](int x, int y, int c) {
+        return c == 0 ? float(x / block) / (w / block) : c == 1 ? float(y / block) / (h / block) : 0.3f;
+    });
+    view_->setImage(big);
+    view_->setMode("Colour");
+    view_->fit();
+    const QImage fb = view_->grabFramebuffer();
+    QCOMPARE(view_->mappedLevel(), 2);
+    const QImage cpu = editor::renderDisplay(*big, "Colour");
+    const double zoom = view_->zoom();
+    for (int by = 0; by < h / block; by += 7)
+        for (int bx = 0; bx < w / block; bx += 5) {
+            const QPointF centre((bx + 0.5) * block, (by + 0.5) * block);
+            const QColor want(cpu.pixel(centre.toPoint())), got(fb.pixel((view_->offset() + centre * zoom).toPoint()));
+            QVERIFY2(std::abs(want.red() - got.red()) <= 2 && std::abs(want.green() - got.green()) <= 2 &&
+                         std::abs(want.blue() - got.blue()) <= 2,
+                     qPrintable(QStringLiteral("block %1,%2: %3 against %4").arg(bx).arg(by).arg(got.name(), want.name())));
+        }
+    // Zoomed in to 1:1 the full image is mapped, once; then pan and zoom
+    // map nothing again.
+    const int mappings = view_->mappings(), uploads = view_->uploads();
+    QTest::keyClick(view_.get(), Qt::Key_1);
+    view_->grabFramebuffer();
+    QCOMPARE(view_->mappings(), mappings + 1);
+    QCOMPARE(view_->mappedLevel(), 0);
+    view_->fit();
+    view_->grabFramebuffer();
+    view_->setView(2.0, QPointF(-100, -50));
+    view_->grabFramebuffer();
+    QCOMPARE(view_->mappings(), mappings + 1);
+    QCOMPARE(view_->uploads(), uploads);
+}
+
 void ViewTest::probeReadsTheBuffer() {
     view_->setView(4.0, QPointF(10, 10));
     QSignalSpy spy(view_.get(), &RenderView::probed);
@@ -151,6 +191,29 @@ void ViewTest::probeReadsTheBuffer() {
     QVERIFY2(text.startsWith("x 3, y 2 |"), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral(" R %1 ").arg(3.0 / 39.0, 0, 'g', 6)), qPrintable(text));
     QVERIFY2(text.contains(" id 0"), qPrintable(text));
+}
+
+void ViewTest::inputThroughTheNativeWindow() {
+    // Events as the window system delivers them, to the native window the
+    // frames are drawn into: they pan, zoom and probe as on the widget.
+    QWindow* window = view_->surface();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    QCOMPARE(window->size(), view_->size());
+    view_->setView(4.0, QPointF(10, 10));
+    QSignalSpy probed(view_.get(), &RenderView::probed);
+    QTest::mouseMove(window, QPoint(10 + 4 * 3 + 2, 10 + 4 * 2 + 1));  // pixel (3, 2)
+    QTRY_VERIFY(!probed.isEmpty());
+    QVERIFY2(probed.last().at(0).toString().startsWith("x 3, y 2 |"), qPrintable(probed.last().at(0).toString()));
+    QTest::mousePress(window, Qt::LeftButton, {}, QPoint(100, 100));
+    QTest::mouseMove(window, QPoint(130, 120));
+    QTest::mouseRelease(window, Qt::LeftButton, {}, QPoint(130, 120));
+    QCOMPARE(view_->offset(), QPointF(40, 30));
+    QTest::keyClick(window, Qt::Key_1);
+    QCOMPARE(view_->zoom(), 1.0);
+    // Frames reach the screen: the swap is announced.
+    QSignalSpy swapped(view_.get(), &RenderView::frameSwapped);
+    view_->requestFrame();
+    QVERIFY(swapped.wait(5000));
 }
 
 void ViewTest::previewCoversTheFullImageArea() {

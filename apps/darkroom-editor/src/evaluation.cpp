@@ -8,6 +8,13 @@ namespace {
 
 constexpr int kMaxLevel = 5;          // 1/32 of each side: 1024 px becomes 32
 constexpr double kBudgetShare = 0.8;  // aim below the budget: timings vary
+constexpr double kLatencyShare = 1.5; // a preview's frame on screen within 1.5 budgets of its edit
+constexpr std::size_t kLatencyFrames = 4;
+
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
 
 }  // namespace
 
@@ -25,6 +32,7 @@ Evaluation::Evaluation(QObject* parent) : QObject(parent) {
     connect(preview_, &EvalWorker::done, this, &Evaluation::onDone);
     settleTimer_.setSingleShot(true);
     connect(&settleTimer_, &QTimer::timeout, this, &Evaluation::settle);
+    clock_.start();
 }
 
 Evaluation::~Evaluation() {
@@ -57,7 +65,7 @@ int Evaluation::chooseLevel(double predicted) const {
     // quarters it. The correction carries what previews really took.
     const double full = std::max(predicted, 1e-6) * previewCorrection_;
     for (int k = 1; k < kMaxLevel; ++k)
-        if (full / std::pow(4.0, k) <= kBudgetShare * budget_) return k;
+        if (full / std::pow(4.0, k) <= kBudgetShare * budget_) return std::max(k, floorLevel_);
     return kMaxLevel;
 }
 
@@ -86,6 +94,8 @@ void Evaluation::request(const darkroom::Graph& graph, const QString& node, cons
     if (!interacting_ || level_ == 0) level_ = chooseLevel(job.predicted < 0 ? 1.0 : job.predicted);
     job.level = level_;
     latestSettled_ = false;
+    requestedAt_.erase(requestedAt_.begin(), requestedAt_.lower_bound(job.generation > 64 ? job.generation - 64 : 0));
+    requestedAt_[job.generation] = clock_.nsecsElapsed() / 1e6;
     preview_->submit(job);
     // A pause of the hand also settles, even while the button is held.
     settleTimer_.start(interacting_ ? 2 * settleDelayMs_ : settleDelayMs_);
@@ -94,10 +104,34 @@ void Evaluation::request(const darkroom::Graph& graph, const QString& node, cons
 void Evaluation::setInteracting(bool on) {
     if (on == interacting_) return;
     interacting_ = on;
+    latencies_.clear();
     if (!on) {
+        endDrag();
         settleTimer_.stop();
         settle();
     }
+}
+
+void Evaluation::framePresented(std::uint64_t generation, int level) {
+    const auto it = requestedAt_.find(generation);
+    if (it == requestedAt_.end()) return;
+    const double ms = clock_.nsecsElapsed() / 1e6 - it->second;
+    requestedAt_.erase(requestedAt_.begin(), std::next(it));
+    if (level == 0 || !interacting_ || level != level_ || budget_ <= 0) return;
+    dragLatencies_.push_back(ms);
+    latencies_.push_back(ms);
+    if (latencies_.size() < kLatencyFrames) return;
+    const double late = median(latencies_);
+    latencies_.clear();
+    if (late > kLatencyShare * budget_ * 1000.0 && level_ < kMaxLevel) ++level_;
+}
+
+void Evaluation::endDrag() {
+    // Previews well in time: the next drag may try one size finer.
+    if (dragLatencies_.empty()) return;
+    const bool quick = median(dragLatencies_) < 0.5 * kLatencyShare * budget_ * 1000.0;
+    floorLevel_ = std::max(0, quick ? level_ - 1 : level_);
+    dragLatencies_.clear();
 }
 
 void Evaluation::settle() {
@@ -129,7 +163,10 @@ void Evaluation::onDone(const EvalResult& r) {
             const double ratio = std::clamp(r.profile.seconds / predicted, 0.25, 16.0);
             previewCorrection_ = std::clamp(0.5 * previewCorrection_ + 0.5 * ratio, 0.25, 16.0);
         }
-        if (interacting_ && r.level == level_ && r.profile.seconds > 1.5 * budget_ && level_ < kMaxLevel) ++level_;
+        if (interacting_ && r.level == level_ && r.profile.seconds > 1.5 * budget_ && level_ < kMaxLevel) {
+            ++level_;
+            latencies_.clear();  // judged at the new size
+        }
         // A preview that fails (or is older than what is shown) says
         // nothing the settled frame will not say better.
         if (!r.error.isEmpty()) {

@@ -11,7 +11,15 @@
 //    is slow (predicted over the budget, or of unknown cost); quick runs and
 //    previews are coalesced instead (the newest waiting one runs next);
 //  - the preview size stays fixed during a drag (a new size would resample
-//    the sources again), coarser only if a preview overran the budget;
+//    the sources again), coarser only if a preview overran the budget, or
+//    if previews reached the screen late: an edit waits on average half a
+//    preview for the worker, then its own preview, then the window's frame,
+//    so the compute budget alone does not bound input-to-pixels. Frames
+//    later than 1.5 budgets after their edit (median of 4) make the rest of
+//    the drag one level coarser. The next drag starts no finer than the
+//    last one ended (one level finer if its frames came in under half
+//    that): the prediction is noisy on a loaded machine, and every new size
+//    resamples the sources, so trying finer sizes costs frames;
 //  - after a slow full-resolution frame the preview evaluator is warmed in
 //    the background (sources read and downsampled), so the first drag step
 //    does not wait for the sources to be read.
@@ -19,10 +27,13 @@
 // the full-resolution results, and a preview never waits behind a full run.
 #include "eval_worker.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
 #include <atomic>
+#include <map>
+#include <vector>
 
 namespace editor {
 
@@ -52,6 +63,8 @@ public:
     std::uint64_t executions(const QString& node) const;
     std::uint64_t previewExecutions(const QString& node) const;
     std::uint64_t generation() const { return generation_; }
+    // The frame of `generation` at preview `level` reached the screen.
+    void framePresented(std::uint64_t generation, int level);
 
 signals:
     void started();
@@ -63,6 +76,7 @@ private:
     int chooseLevel(double predicted) const;
     void warmPreview(const EvalResult& full);
     bool isSource(const darkroom::Graph& g, const QString& node) const;
+    void endDrag();
 
     EvalWorker* full_;
     EvalWorker* preview_;
@@ -74,6 +88,11 @@ private:
     int settleDelayMs_ = 150;
     double previewCorrection_ = 1.0;  // measured preview time / predicted, smoothed
     int level_ = 0;                   // preview level of the current drag (0: none chosen)
+    int floorLevel_ = 0;              // the coarsest level a drag starts at: where the last drag ended
+    QElapsedTimer clock_;
+    std::map<std::uint64_t, double> requestedAt_;  // ms on clock_, previews not yet on screen
+    std::vector<double> latencies_;                // ms from edit to screen, frames at level_ not yet judged
+    std::vector<double> dragLatencies_;            // the whole drag's
     std::atomic<std::uint64_t> generation_{0};
     std::uint64_t shownGeneration_ = 0;
     int shownLevel_ = 0;

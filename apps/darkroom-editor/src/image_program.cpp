@@ -9,6 +9,7 @@
 #include <QOpenGLTexture>
 #include <QOpenGLVertexArrayObject>
 
+#include <algorithm>
 #include <vector>
 
 namespace editor {
@@ -134,24 +135,45 @@ bool ImageProgram::initialize(QString* error) {
 }
 
 void ImageProgram::setImage(darkroom::BufferPtr image) {
+    // The textures of an image of the same size are refilled by the next one
+    // (successive frames of an edit almost always are).
+    const bool sameSize = image && image_ && image->width() == image_->width() && image->height() == image_->height();
+    if (!sameSize) spare_.clear();
+    for (auto& [name, tex] : channels_)
+        if (sameSize) spare_.push_back(std::move(tex));
     channels_.clear();
     mappedValid_ = false;
-    if (mapped_ && (!image || mapped_->size() != QSize(image->width(), image->height()))) mapped_.reset();
+    if (!image) mapped_.reset();
     image_ = std::move(image);
+}
+
+int ImageProgram::levelFor(QRectF target) const {
+    // The coarsest reduction whose texels are still no larger than a screen
+    // pixel: drawing it minifies (or copies), never magnifies.
+    constexpr int kMaxLevel = 4;
+    const double screenPerPixel =
+        std::min(target.width() / image_->width(), target.height() / image_->height());
+    int level = 0;
+    while (level < kMaxLevel && screenPerPixel * double(2 << level) <= 1.0) ++level;
+    return level;
 }
 
 QOpenGLTexture* ImageProgram::channelTexture(const std::string& name) {
     auto& tex = channels_[name];
     if (tex) return tex.get();
-    const int w = image_->width(), h = image_->height();
-    tex = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
-    tex->setFormat(QOpenGLTexture::R32F);
-    tex->setSize(w, h);
-    tex->setMipLevels(1);
-    tex->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
-    tex->setWrapMode(QOpenGLTexture::ClampToEdge);
-    // One texel per image pixel in the mapping pass.
-    tex->setMinMagFilters(QOpenGLTexture::Nearest, QOpenGLTexture::Nearest);
+    if (!spare_.empty()) {
+        tex = std::move(spare_.back());
+        spare_.pop_back();
+    } else {
+        tex = std::make_unique<QOpenGLTexture>(QOpenGLTexture::Target2D);
+        tex->setFormat(QOpenGLTexture::R32F);
+        tex->setSize(image_->width(), image_->height());
+        tex->setMipLevels(1);
+        tex->allocateStorage(QOpenGLTexture::Red, QOpenGLTexture::Float32);
+        tex->setWrapMode(QOpenGLTexture::ClampToEdge);
+        // One texel per image pixel in the mapping pass.
+        tex->setMinMagFilters(QOpenGLTexture::Nearest, QOpenGLTexture::Nearest);
+    }
     QOpenGLPixelTransferOptions rows;
     rows.setAlignment(4);
     if (const float* f = image_->hostFloat(name)) {
@@ -164,9 +186,11 @@ QOpenGLTexture* ImageProgram::channelTexture(const std::string& name) {
     return tex.get();
 }
 
-void ImageProgram::map(const DisplaySpec& spec) {
-    const int w = image_->width(), h = image_->height();
-    if (!mapped_) {
+void ImageProgram::map(const DisplaySpec& spec, int level) {
+    // Each texel samples the pixel nearest its centre (nearest filtering):
+    // every 2^level-th pixel of each row and column.
+    const int w = (image_->width() + (1 << level) - 1) >> level, h = (image_->height() + (1 << level) - 1) >> level;
+    if (!mapped_ || mapped_->size() != QSize(w, h)) {
         mapped_ = std::make_unique<QOpenGLFramebufferObject>(w, h, QOpenGLFramebufferObject::NoAttachment,
                                                              GL_TEXTURE_2D, GL_RGBA8);
     }
@@ -202,12 +226,15 @@ void ImageProgram::map(const DisplaySpec& spec) {
     mapped_->release();
     mappedSpec_ = spec;
     mappedValid_ = true;
+    mappedLevel_ = level;
     ++mappings_;
 }
 
 void ImageProgram::draw(const DisplaySpec& spec, QRectF target, QSize viewport, unsigned fbo, bool smooth) {
     if (!drawProgram_ || !image_ || spec.kind == DisplaySpec::Kind::None || image_->width() <= 0) return;
-    if (!mappedValid_ || !(mappedSpec_ == spec)) map(spec);
+    const int level = levelFor(target);
+    if (!mappedValid_ || !(mappedSpec_ == spec)) map(spec, level);
+    else if (level < mappedLevel_) map(spec, 0);  // zoomed in past the reduction: all pixels, once
 
     auto* gl = QOpenGLContext::currentContext()->functions();
     gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);

@@ -149,6 +149,7 @@ void MainWindow::connectParts(QToolButton* fit) {
         if (it == tags_.end()) return;
         const auto [generation, level] = it->second;
         tags_.erase(tags_.begin(), std::next(it));
+        eval_->framePresented(generation, level);  // steers the preview size
         emit framePresented(generation, level);
     });
     connect(render_, &RenderView::modesChanged, this, [this](const QStringList& modes, const QString& cur) {

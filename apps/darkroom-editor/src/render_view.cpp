@@ -1,22 +1,37 @@
 #include "render_view.h"
 
 #include "image_program.h"
+#include "render_surface.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
+#include <QOpenGLPaintDevice>
 #include <QPainter>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 
 #include <cmath>
 
 namespace editor {
 
-RenderView::RenderView(QWidget* parent) : QOpenGLWidget(parent), program_(std::make_unique<ImageProgram>()) {
+RenderView::RenderView(QWidget* parent) : QWidget(parent), program_(std::make_unique<ImageProgram>()) {
     setMouseTracking(true);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 150);
-    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+    surface_ = new RenderSurface(this, [this] { initializeGL(); }, [this] {
+        drawFrame(surface_->context()->defaultFramebufferObject(), surface_->size() * surface_->devicePixelRatio());
+        if (tag_ != drawnTag_) {
+            drawnTag_ = tag_;
+            drawnNew_ = true;  // announced when the window's buffers swap
+        }
+    });
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(QWidget::createWindowContainer(surface_, this));
+    connect(surface_, &RenderSurface::frameSwapped, this, [this] {
+        emit frameSwapped();
         if (!drawnNew_) return;
         drawnNew_ = false;
         presentedTag_ = drawnTag_;
@@ -25,15 +40,25 @@ RenderView::RenderView(QWidget* parent) : QOpenGLWidget(parent), program_(std::m
 }
 
 RenderView::~RenderView() {
-    // Textures and the shader belong to this widget's context.
-    makeCurrent();
-    program_.reset();
-    doneCurrent();
+    // Textures and the shader belong to the window's context.
+    surface_->detach();
+    if (surface_->context() && surface_->makeCurrent()) {
+        program_.reset();
+        surface_->doneCurrent();
+    }
 }
+
+void RenderView::requestFrame() { surface_->requestUpdate(); }
+
+void RenderView::renderNow() { surface_->renderNow(); }
+
+QWindow* RenderView::surface() const { return surface_; }
 
 int RenderView::uploads() const { return program_->uploads(); }
 
 int RenderView::mappings() const { return program_->mappings(); }
+
+int RenderView::mappedLevel() const { return program_->mappedLevel(); }
 
 QSizeF RenderView::fullSize() const {
     if (!image_) return {};
@@ -62,14 +87,14 @@ void RenderView::setImage(darkroom::BufferPtr image, int level, std::uint64_t ta
     if (fitted_) fit();
     if (newModes) emit modesChanged(modes_, mode_);
     if (hover_.x() >= 0) updateProbe(hover_);
-    update();
+    requestFrame();
 }
 
 void RenderView::setMode(const QString& mode) {
     if (mode == mode_ || !modes_.contains(mode)) return;
     mode_ = mode;
     spec_ = image_ ? displaySpec(*image_, mode_) : DisplaySpec{};
-    update();
+    requestFrame();
 }
 
 void RenderView::fit() {
@@ -78,14 +103,14 @@ void RenderView::fit() {
     if (s.isEmpty() || width() <= 0) return;
     zoom_ = std::min(width() / s.width(), height() / s.height());
     offset_ = QPointF((width() - s.width() * zoom_) / 2, (height() - s.height() * zoom_) / 2);
-    update();
+    requestFrame();
 }
 
 void RenderView::setView(double zoom, QPointF offset) {
     zoom_ = std::clamp(zoom, 0.02, 64.0);
     offset_ = offset;
     fitted_ = false;
-    update();
+    requestFrame();
 }
 
 QPoint RenderView::pixelAt(QPointF p) const {
@@ -97,12 +122,14 @@ void RenderView::initializeGL() {
     if (!program_->initialize(&glError_)) qWarning("darkroom-editor render view: %s", qPrintable(glError_));
 }
 
-void RenderView::resizeGL(int, int) {
+void RenderView::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
     if (fitted_) fit();
 }
 
-void RenderView::paintGL() {
-    auto* gl = context()->functions();
+void RenderView::drawFrame(unsigned fbo, QSize pixels) {
+    auto* gl = QOpenGLContext::currentContext()->functions();
+    gl->glViewport(0, 0, pixels.width(), pixels.height());
     gl->glClearColor(30 / 255.0f, 30 / 255.0f, 32 / 255.0f, 1.0f);
     gl->glClear(GL_COLOR_BUFFER_BIT);
     if (imageChanged_) {
@@ -110,35 +137,43 @@ void RenderView::paintGL() {
         imageChanged_ = false;
     }
     const qreal dpr = devicePixelRatioF();
-    if (image_ && spec_.kind != DisplaySpec::Kind::None && glError_.isEmpty()) {
-        const QSizeF s = fullSize();
-        const QRectF target(offset_ * dpr, s * zoom_ * dpr);
-        program_->draw(spec_, target, QSize(int(width() * dpr), int(height() * dpr)), defaultFramebufferObject(),
-                       level_ > 0);
-    } else {
-        QPainter p(this);
+    const bool drawsImage = image_ && spec_.kind != DisplaySpec::Kind::None && glError_.isEmpty();
+    if (drawsImage) program_->draw(spec_, QRectF(offset_ * dpr, fullSize() * zoom_ * dpr), pixels, fbo, level_ > 0);
+    if (drawsImage && message_.isEmpty()) return;
+    // Text over the frame with Qt's OpenGL paint engine, into the same framebuffer.
+    QOpenGLPaintDevice device(pixels);
+    device.setDevicePixelRatio(dpr);
+    QPainter p(&device);
+    if (!drawsImage) {
         p.setPen(Qt::lightGray);
         p.drawText(rect(), Qt::AlignCenter,
                    glError_.isEmpty() ? tr("Select a node with an image output") : tr("OpenGL: %1").arg(glError_));
     }
-    if (!message_.isEmpty()) drawMessage();
-    if (tag_ != drawnTag_) {
-        drawnTag_ = tag_;
-        drawnNew_ = true;  // announced when the window's buffers swap
-    }
+    if (!message_.isEmpty()) drawMessage(p);
+}
+
+QImage RenderView::grabFramebuffer() {
+    if (!surface_->makeCurrent()) return {};
+    const QSize pixels = size() * devicePixelRatioF();
+    // A stencil buffer for the paint engine's clipping, as QOpenGLWidget has.
+    QOpenGLFramebufferObject fbo(pixels, QOpenGLFramebufferObject::CombinedDepthStencil);
+    fbo.bind();
+    drawFrame(fbo.handle(), pixels);
+    QImage image = fbo.toImage();
+    fbo.release();
+    return image;
 }
 
 void RenderView::setMessage(const QString& text, bool error) {
     if (text == message_ && error == messageError_) return;
     message_ = text;
     messageError_ = error;
-    update();
+    requestFrame();
 }
 
-void RenderView::drawMessage() {
+void RenderView::drawMessage(QPainter& p) {
     // A banner along the top, over the picture (the last good frame stays
     // visible below it): the user sees what failed where they are looking.
-    QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     const QRect box = rect().adjusted(8, 8, -8, -8);
     const QRect textRect = p.fontMetrics().boundingRect(box.adjusted(10, 6, -10, -6), Qt::TextWordWrap, message_);
@@ -165,7 +200,7 @@ void RenderView::wheelEvent(QWheelEvent* e) {
     offset_ = at - (at - offset_) * (z / zoom_);
     zoom_ = z;
     fitted_ = false;
-    update();
+    requestFrame();
 }
 
 void RenderView::mousePressEvent(QMouseEvent* e) { last_ = e->position().toPoint(); }
@@ -175,7 +210,7 @@ void RenderView::mouseMoveEvent(QMouseEvent* e) {
         offset_ += e->position().toPoint() - last_;
         last_ = e->position().toPoint();
         fitted_ = false;
-        update();
+        requestFrame();
     }
     hover_ = e->position();
     updateProbe(hover_);
@@ -190,8 +225,8 @@ void RenderView::keyPressEvent(QKeyEvent* e) {
         zoom_ = 1.0;
         offset_ = QPointF((width() - s.width()) / 2.0, (height() - s.height()) / 2.0);
         fitted_ = false;
-        update();
-    } else QOpenGLWidget::keyPressEvent(e);
+        requestFrame();
+    } else QWidget::keyPressEvent(e);
 }
 
 }  // namespace editor

@@ -1,23 +1,31 @@
 #pragma once
-// The render view: an OpenGL widget showing one image output over a
-// checkerboard, with pan (drag), zoom (wheel, about the cursor), fit
-// (double-click or F), 1:1 (1) and a pixel probe under the cursor. The
-// image lives on the GPU (image_program.h); a frame is one textured quad.
-// A preview image (1/2^level of the full size) is drawn over the area of the
-// full-size image, so the picture does not jump when the full frame lands.
+// The render view: a widget showing one image output over a checkerboard,
+// with pan (drag), zoom (wheel, about the cursor), fit (double-click or F),
+// 1:1 (1) and a pixel probe under the cursor. The image lives on the GPU
+// (image_program.h); a frame is one textured quad, drawn into a native
+// OpenGL window that fills the widget (render_surface.h says why it is not
+// a QOpenGLWidget). The widget keeps the view's state and handles the
+// window's input. A preview image (1/2^level of the full size) is drawn over
+// the area of the full-size image, so the picture does not jump when the
+// full frame lands.
 #include "display.h"
 
 #include <darkroom/buffer.h>
 
-#include <QOpenGLWidget>
+#include <QImage>
+#include <QWidget>
 
 #include <memory>
+
+class QPainter;
+class QWindow;
 
 namespace editor {
 
 class ImageProgram;
+class RenderSurface;
 
-class RenderView : public QOpenGLWidget {
+class RenderView : public QWidget {
     Q_OBJECT
 public:
     explicit RenderView(QWidget* parent = nullptr);
@@ -41,6 +49,8 @@ public:
     // and zoom do neither).
     int uploads() const;
     int mappings() const;
+    // The reduction the shown mapping was made at (image_program.h).
+    int mappedLevel() const;
     // The OpenGL problem, when the view cannot draw.
     const QString& glError() const { return glError_; }
     // A message written over the view (an evaluation error naming the
@@ -48,17 +58,24 @@ public:
     void setMessage(const QString& text, bool error);
     const QString& message() const { return message_; }
     bool messageIsError() const { return messageError_; }
+    // The frame as drawn on screen, drawn again into an image of the view's
+    // size (tests compare pixels; nothing is read from the window).
+    QImage grabFramebuffer();
+    // A frame is drawn at the next update request; renderNow draws it now.
+    void requestFrame();
+    void renderNow();
+    // The native window the frames are drawn into (its input comes here).
+    QWindow* surface() const;
 
 signals:
     void modesChanged(const QStringList& modes, const QString& current);
     void probed(const QString& text);
     // The image set with `tag` reached the screen (the window's buffers swapped).
     void presented(std::uint64_t tag);
+    void frameSwapped();  // any frame
 
 protected:
-    void initializeGL() override;
-    void paintGL() override;
-    void resizeGL(int w, int h) override;
+    void resizeEvent(QResizeEvent* e) override;
     void wheelEvent(QWheelEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
@@ -68,7 +85,12 @@ protected:
 private:
     QSizeF fullSize() const;  // the image's size in full-resolution pixels
     void updateProbe(QPointF at);
-    void drawMessage();
+    void initializeGL();
+    // Draws the frame into `fbo` (bound), `pixels` in device pixels.
+    void drawFrame(unsigned fbo, QSize pixels);
+    void drawMessage(QPainter& p);
+
+    RenderSurface* surface_;  // owned by its container, a child of this widget
 
     std::unique_ptr<ImageProgram> program_;
     darkroom::BufferPtr image_;
