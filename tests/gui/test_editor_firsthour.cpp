@@ -155,18 +155,20 @@ void FirstHourTest::cinemaLabelsAndSlidersShowReadableValues() {
     // Values as a simulation code writes them: %E with six decimals.
     const std::string cdb = dir_->file("sim.cdb");
     QDir().mkpath(QString::fromStdString(cdb));
-    for (int i = 0; i < 3; ++i)
-        writeImage(*test::makeImage(8, 8, {"R", "G", "B"}, [i](int, int, int) { return i / 2.0f; }),
+    for (int i = 0; i < 4; ++i)
+        writeImage(*test::makeImage(8, 8, {"R", "G", "B"}, [i](int, int, int) { return i / 3.0f; }),
                    cdb + "/e" + std::to_string(i) + ".exr");
+    // The last time is a sum of steps written with its binary noise.
     test::writeText(cdb + "/data.csv", "time,kind,run,FILE\n0.000000E+00,a,007,e0.exr\n2.500000E-01,a,008,e1.exr\n"
-                                       "1.250000E+03,b,009,e2.exr\n");
+                                       "0.44999999999999996,b,009,e2.exr\n1.250000E+03,b,010,e3.exr\n");
     QVERIFY(w_->openCinema(QString::fromStdString(cdb)));
     QListWidget* list = w_->cinema()->thumbnails();
-    QCOMPARE(list->count(), 3);
+    QCOMPARE(list->count(), 4);
     // Integers stay as written: a padded run number is an identifier.
     QCOMPARE(list->item(0)->text(), QString("time=0, kind=a, run=007"));
     QCOMPARE(list->item(1)->text(), QString("time=0.25, kind=a, run=008"));
-    QCOMPARE(list->item(2)->text(), QString("time=1250, kind=b, run=009"));
+    QCOMPARE(list->item(2)->text(), QString("time=0.45, kind=b, run=009"));
+    QCOMPARE(list->item(3)->text(), QString("time=1250, kind=b, run=010"));
     // The reader still gets the values as written (they find the row exactly).
     QCOMPARE(w_->cinema()->entries()[1].parameters, QString("time=2.500000E-01, kind=a, run=008"));
 
@@ -179,7 +181,7 @@ void FirstHourTest::cinemaLabelsAndSlidersShowReadableValues() {
     slider->setValue(1);
     QCOMPARE(value->text(), QString("0.25"));
     list->setCurrentRow(2);
-    QCOMPARE(value->text(), QString("1250"));
+    QCOMPARE(value->text(), QString("0.45"));
     QCOMPARE(w_->cinema()->findChild<QLabel*>("value:run")->text(), QString("009"));
     QVERIFY(guitest::waitIdle(*w_));
     QVERIFY(guitest::screenshot(w_->dock("cinema"), "firsthour-cinema-values"));

@@ -10,6 +10,7 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -25,9 +26,19 @@ QString readableValue(const std::string& cell) {
     double v = 0;
     const auto [at, ec] = std::from_chars(begin, end, v);
     if (ec != std::errc() || at != end || !std::isfinite(v)) return QString::fromStdString(cell);
-    char buf[32];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);  // shortest that reads back exactly
-    return QString::fromLatin1(buf, int(res.ptr - buf));
+    // The fewest significant digits within a billionth of the value: a sum
+    // of steps written with its binary noise (0.44999999999999996) reads
+    // 0.45, while values a parameter study tells apart stay apart.
+    // At least the digits of the integer part, so that 1250 is not 1.25e+03.
+    const int integerDigits = std::abs(v) >= 1 ? int(std::floor(std::log10(std::abs(v)))) + 1 : 1;
+    char buf[40];
+    for (int digits = std::min(integerDigits, 17); digits <= 17; ++digits) {
+        const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
+        double back = 0;
+        std::from_chars(buf, res.ptr, back);
+        if (std::abs(back - v) <= 1e-9 * std::abs(v) || digits == 17) return QString::fromLatin1(buf, int(res.ptr - buf));
+    }
+    return QString::fromStdString(cell);
 }
 
 QString readableLabel(const darkroom::CinemaDatabase& db, std::size_t row) {
