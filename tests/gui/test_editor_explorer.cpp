@@ -97,6 +97,7 @@ private slots:
     void savedSelectionSurvivesTheLoadersRoundTrip();
     void polylinesAreRasterisedWithoutGapsOrOverlaps();
     void aDatabaseOpenedByARelativePathIsFoundByTheReader();
+    void aDatabaseAnotherToolWroteIsExplored();
 
 private:
     editor::ExplorerPanel* open();
@@ -521,3 +522,43 @@ void ExplorerTest::aDatabaseOpenedByARelativePathIsFoundByTheReader() {
 
 QTEST_MAIN(ExplorerTest)
 #include "test_editor_explorer.moc"
+
+// cinemasci's test database (../shared/data): theta and phi, two FILE
+// columns of PNG pictures. Brushing phi keeps the rows the CSV says; a
+// picked picture is shaded in the render view.
+void ExplorerTest::aDatabaseAnotherToolWroteIsExplored() {
+    const std::string cdb = test::sharedData("cinema/multiple_artifacts.cdb");
+    if (cdb.empty()) QSKIP("../shared/data is absent");
+    QVERIFY(w_->openCinema(QString::fromStdString(cdb)));
+    QTest::qWait(50);
+    editor::ExplorerPanel* ex = w_->explorer();
+    QVERIFY(ex);
+    QCOMPARE(ex->model().size(), std::size_t(20));
+    QVERIFY(ex->model().axisIndex("theta") >= 0);
+    QVERIFY(ex->model().axisIndex("phi") >= 0);
+    brush("phi", -90, 90);
+    std::set<std::size_t> expected;
+    for (std::size_t item = 0; item < ex->model().size(); ++item) {
+        const double phi = -180 + 18.0 * double(ex->model().row(item));  // the CSV's rows: phi from -180 by 18
+        if (phi >= -90 && phi <= 90) expected.insert(item);
+    }
+    QCOMPARE(expected.size(), std::size_t(11));
+    QCOMPARE(gridItems(), expected);
+    editor::ImageGrid* grid = ex->grid();
+    const auto visible = grid->visibleItems();
+    QVERIFY(visible.size() > 2);
+    QTest::mouseClick(grid->viewport(), Qt::LeftButton, {}, grid->cellRect(visible[2]).center());
+    QCOMPARE(w_->cinema()->currentEntry(), visible[2]);
+    QVERIFY(guitest::waitIdle(*w_));
+    QVERIFY(w_->renderView()->image());
+    // Every picture on screen decoded (the thumbnails of PNGs another tool wrote).
+    editor::ThumbnailCache* cache = ex->cache();
+    QVERIFY(QTest::qWaitFor([&] {
+        for (std::size_t item : grid->visibleItems())
+            if (!cache->find(item)) return false;
+        return cache->idle();
+    }, 60000));
+    QCOMPARE(cache->failed(), 0);
+    QTest::qWait(100);  // the grid's repaint of what landed
+    QVERIFY(guitest::screenshot(w_.get(), "explorer-shared-data"));
+}
