@@ -4,6 +4,7 @@
 #include <darkroom/diagnostics.h>
 #include <darkroom/core/registry.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,12 @@ void report(const Diagnostics& diagnostics);
 void reportError(const std::string& message);
 
 // Loads plugins from the default search path plus --plugin-path. Plugins that
-// fail are reported as warnings and skipped; the runner goes on.
-Registry& loadRegistry(const GlobalOptions& options);
+// fail are reported as warnings and skipped; the runner goes on. With
+// `wanted` (the node types of the pipeline a command runs), only the plugins
+// that register one of them or a capture backend are loaded, unless one of
+// them is then still missing: every plugin is loaded then, so that messages
+// and suggestions know every type. The first call decides.
+Registry& loadRegistry(const GlobalOptions& options, const std::set<std::string>* wanted = nullptr);
 
 // True when stderr is a terminal (progress bars only then).
 bool stderrIsTerminal();

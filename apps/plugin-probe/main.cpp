@@ -3,8 +3,9 @@
 // it went. The host runs it for every new or changed plugin file before
 // loading the file itself (framework/core/src/plugin_scan.cpp).
 //
-// Output: one line "ok" on stdout when everything succeeded, else one line
-// "refused: <reason>". A plugin that exits, crashes or hangs while loading
+// Output: one line "ok" on stdout when everything succeeded, followed by a
+// tab and the types it registered ("ok\tColorMapping,backend:embree"), else
+// one line "refused: <reason>". A plugin that exits, crashes or hangs while loading
 // never lets the line be printed; the host tells those apart by the exit
 // status.
 #include <darkroom/plugin.h>
@@ -20,9 +21,11 @@
 
 namespace {
 
-class CountingRegistrar final : public darkroom::Registrar {
+// Records the types a plugin registers, for the host to load only the
+// plugins a pipeline needs.
+class RecordingRegistrar final : public darkroom::Registrar {
 public:
-    int types = 0;
+    std::string types;  // "A,B,backend:embree"
     void addFilter(darkroom::FilterInfo info) override {
         // Constructing the filter and declaring its ports runs plugin code
         // the host will run later; a crash there belongs to the probe.
@@ -30,12 +33,23 @@ public:
             auto f = info.create();
             if (f) (void)f->ports();
         }
-        ++types;
+        add(info.type);
     }
     void addCaptureBackend(darkroom::CaptureBackendInfo info) override {
         if (info.create) (void)info.create();
-        ++types;
+        add("backend:" + info.type);
     }
+
+private:
+    void add(const std::string& type) {
+        // A name with the list's separators cannot be listed: the host then
+        // knows nothing of the plugin's types and always loads it.
+        if (type.find_first_of(",\t\n") != std::string::npos) unlisted = true;
+        types += (types.empty() ? "" : ",") + type;
+    }
+
+public:
+    bool unlisted = false;
 };
 
 int answer(const std::string& line) {
@@ -71,14 +85,17 @@ int main(int argc, char** argv) {
     // register function, a registration that reports failure) it also names
     // by itself: only crashes and escaping exceptions are the probe's to tell.
     if (!info || info->abi_version != DARKROOM_ABI_VERSION || !info->register_types) return answer("ok");
+    RecordingRegistrar r;
+    bool registered = false;
     try {
-        CountingRegistrar r;
         char error[1024] = {0};
-        (void)info->register_types(&r, error, sizeof error);
+        registered = info->register_types(&r, error, sizeof error) == 0;
     } catch (const std::exception& e) {
         return answer(std::string("refused: an exception escaped the register function: ") + e.what());
     } catch (...) {
         return answer("refused: an exception escaped the register function");
     }
-    return answer("ok");
+    // "ok" and the types registered, which the host caches; a plain "ok" when
+    // they cannot be listed (the host then loads the plugin whatever it needs).
+    return answer(registered && !r.unlisted ? "ok\t" + r.types : "ok");
 }

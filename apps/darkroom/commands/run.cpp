@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <set>
 
 namespace darkroom::cli {
@@ -131,7 +132,9 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
 }
 
 int runPipeline(const GlobalOptions& global, const RunArgs& a) {
-    const Registry& r = loadRegistry(global);
+    // Only the plugins the pipeline's nodes come from (and capture backends).
+    const std::optional<std::set<std::string>> types = pipelineNodeTypes(a.path);
+    const Registry& r = loadRegistry(global, types ? &*types : nullptr);
     Diagnostics d;
     Graph g = loadPipeline(a.path, r, d);
     // Every rank meets the same problems in the same files: one says so.

@@ -341,6 +341,23 @@ Graph loadPipeline(const std::string& path, const Registry& registry, Diagnostic
     return parsePipeline(text, path, registry, diagnostics);
 }
 
+std::optional<std::set<std::string>> pipelineNodeTypes(const std::string& path) {
+    try {
+        const YAML::Node root = YAML::Load(readInputFile(path, "pipeline"));
+        const YAML::Node nodes = root["nodes"];
+        if (!nodes || !nodes.IsMap()) return std::nullopt;
+        std::set<std::string> types;
+        for (const auto& n : nodes) {
+            const YAML::Node type = n.second.IsMap() ? n.second["type"] : YAML::Node();
+            if (!type || !type.IsScalar()) return std::nullopt;
+            types.insert(type.Scalar());
+        }
+        return types;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
 std::string serializePipeline(const Graph& g) {
     std::ostringstream out;
     out << "darkroom: " << kPipelineFormatVersion << "\n";

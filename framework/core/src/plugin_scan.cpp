@@ -102,7 +102,7 @@ ProbeVerdict runProbe(const std::string& probe, const std::string& plugin, doubl
         return {false, "it did not finish loading within " + std::to_string(int(timeoutSeconds)) + " s (a hang in a "
                        "static constructor or in registration?)"};
     if (WIFSIGNALED(status)) return {false, "it crashed while loading or registering: " + signalName(WTERMSIG(status))};
-    if (text.rfind("ok", 0) == 0) return {true, ""};
+    if (text.rfind("ok", 0) == 0) return {true, "", typesSaid(text)};
     if (text.rfind("refused: ", 0) == 0) {
         std::string why = text.substr(9);
         while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
@@ -111,6 +111,37 @@ ProbeVerdict runProbe(const std::string& probe, const std::string& plugin, doubl
     return {false, "it ended the process while loading (exit status " +
                        std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
                        ", e.g. exit() in a static constructor)"};
+}
+
+namespace {
+
+// "a,b,c" -> {a, b, c}; "" -> {}.
+std::vector<std::string> splitTypes(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream ss(list);
+    for (std::string t; std::getline(ss, t, ',');)
+        if (!t.empty()) out.push_back(t);
+    return out;
+}
+
+std::string joinTypes(const std::vector<std::string>& types) {
+    std::string out;
+    for (const auto& t : types) out += (out.empty() ? "" : ",") + t;
+    return out;
+}
+
+constexpr const char* kTypesField = "types=";
+
+}  // namespace
+
+std::optional<std::vector<std::string>> typesSaid(const std::string& probeOutput) {
+    // "ok\tTypeA,TypeB,backend:embree\n"; a bare "ok" (an older probe, or a
+    // plugin the host refuses by itself) says nothing of its types.
+    const std::size_t tab = probeOutput.find('\t');
+    if (tab == std::string::npos || probeOutput.compare(0, tab, "ok") != 0) return std::nullopt;
+    std::string list = probeOutput.substr(tab + 1);
+    while (!list.empty() && (list.back() == '\n' || list.back() == '\r')) list.pop_back();
+    return splitTypes(list);
 }
 
 std::string PluginScan::cachePath() {
@@ -126,7 +157,7 @@ PluginScan::PluginScan() : probe_(findProbe()), cacheFile_(cachePath()) {
     if (cacheFile_.empty()) return;
     std::ifstream in(cacheFile_);
     std::string line;
-    // path \t mtime \t size \t ok|quarantined \t reason
+    // path \t mtime \t size \t ok|quarantined \t reason [\t types=A,B,...]
     while (std::getline(in, line)) {
         std::vector<std::string> f;
         std::stringstream ss(line);
@@ -142,6 +173,8 @@ PluginScan::PluginScan() : probe_(findProbe()), cacheFile_(cachePath()) {
         }
         e.verdict.ok = f[3] == "ok";
         e.verdict.reason = f.size() > 4 ? f[4] : "";
+        if (f.size() > 5 && f[5].rfind(kTypesField, 0) == 0)
+            e.verdict.types = splitTypes(f[5].substr(std::string(kTypesField).size()));
         entries_[f[0]] = e;
     }
 }
@@ -153,7 +186,10 @@ ProbeVerdict PluginScan::check(const std::string& path) {
     if (!stamp(path, mtime, size)) return {true, ""};  // the in-process loader reports the problem
     std::error_code ec;
     const std::string key = fs::weakly_canonical(path, ec).string();
-    if (auto it = entries_.find(key); it != entries_.end() && it->second.mtimeNs == mtime && it->second.size == size)
+    // A verdict of a cache written before types were recorded is probed
+    // again, once, to learn them.
+    if (auto it = entries_.find(key); it != entries_.end() && it->second.mtimeNs == mtime &&
+                                      it->second.size == size && (!it->second.verdict.ok || it->second.verdict.types))
         return it->second.verdict;
     Entry e;
     e.mtimeNs = mtime;
@@ -172,7 +208,8 @@ void PluginScan::save() {
         for (char& c : reason)
             if (c == '\t' || c == '\n') c = ' ';
         text += path + "\t" + std::to_string(e.mtimeNs) + "\t" + std::to_string(e.size) + "\t" +
-                (e.verdict.ok ? "ok" : "quarantined") + "\t" + reason + "\n";
+                (e.verdict.ok ? "ok" : "quarantined") + "\t" + reason +
+                (e.verdict.types ? "\t" + std::string(kTypesField) + joinTypes(*e.verdict.types) : "") + "\n";
     }
     std::error_code ec;
     fs::create_directories(fs::path(cacheFile_).parent_path(), ec);

@@ -8,12 +8,21 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace darkroom {
 
 struct ProbeVerdict {
+    ProbeVerdict() = default;
+    ProbeVerdict(bool ok_, std::string reason_, std::optional<std::vector<std::string>> types_ = std::nullopt)
+        : ok(ok_), reason(std::move(reason_)), types(std::move(types_)) {}
     bool ok = false;
     std::string reason;  // why a plugin is quarantined
+    // The filter types it registers and its capture backends (as
+    // "backend:NAME"), when the probe said: a host that needs only some types
+    // loads only the plugins that have them (Registry::loadPlugins).
+    std::optional<std::vector<std::string>> types;
 };
 
 class PluginScan {
@@ -47,6 +56,10 @@ private:
     std::map<std::string, Entry> entries_;
     bool dirty_ = false;
 };
+
+// The types a probe's "ok" line lists ("ok\tA,B,backend:embree"); none
+// when it lists none (a bare "ok").
+std::optional<std::vector<std::string>> typesSaid(const std::string& probeOutput);
 
 // Runs `probe PLUGIN` with a time limit and interprets how it ended.
 ProbeVerdict runProbe(const std::string& probe, const std::string& plugin, double timeoutSeconds);

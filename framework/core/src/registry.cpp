@@ -75,7 +75,27 @@ std::vector<std::string> Registry::defaultSearchPath(const std::vector<std::stri
     return out;
 }
 
-Diagnostics Registry::loadPlugins(const std::vector<std::string>& searchPath) {
+namespace {
+
+// Whether a plugin whose registered types are `types` is needed for the
+// node types `wanted`: one of them, or a capture backend (which a Capture
+// node picks by a parameter's value, not by a node type).
+bool needed(const std::vector<std::string>& types, const std::set<std::string>& wanted) {
+    return std::any_of(types.begin(), types.end(),
+                       [&](const std::string& t) { return wanted.count(t) || t.rfind("backend:", 0) == 0; });
+}
+
+}  // namespace
+
+Diagnostics Registry::loadSetAside() {
+    Diagnostics out;
+    std::vector<std::string> files;
+    files.swap(setAside_);
+    for (const auto& f : files) loadPlugin(f, out);
+    return out;
+}
+
+Diagnostics Registry::loadPlugins(const std::vector<std::string>& searchPath, const std::set<std::string>* wanted) {
     Diagnostics out;
     std::set<std::string> seen;
     std::vector<std::string> files;
@@ -136,6 +156,10 @@ Diagnostics Registry::loadPlugins(const std::vector<std::string>& searchPath) {
         if (!v.ok) {
             out.push_back(pluginError(f, "plugin quarantined (tried in a separate process first): " + v.reason +
                                              "; skipped (it is tried again when the file changes)"));
+            continue;
+        }
+        if (wanted && v.types && !needed(*v.types, *wanted)) {
+            setAside_.push_back(f);
             continue;
         }
         loadPlugin(f, out);

@@ -261,6 +261,13 @@ TEST(RunnerCli, DidYouMeanForNodeTypesDescribeAndSet) {
                          "'ColorMapping'?)"),
               std::string::npos)
         << v.err;
+    // `run` loads only the plugins a pipeline names; a type none has brings
+    // every plugin in, so the suggestion is the same.
+    const auto r = runDarkroom({"run", c.dir.file("typo.yaml")});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("unknown node type 'ColorMaping' for node 'x' (did you mean 'ColorMapping'?)"),
+              std::string::npos)
+        << r.err;
     const auto d = runDarkroom({"describe", "ColorMaping"});
     EXPECT_EQ(d.exitCode, 2);
     EXPECT_NE(d.err.find("unknown node type 'ColorMaping' (did you mean 'ColorMapping'?)"), std::string::npos) << d.err;

@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <set>
+#include <sstream>
 #include <string>
 
 using namespace darkroom;
@@ -88,4 +90,38 @@ TEST_F(PluginIsolation, ASymlinkLoopInAPluginFolderIsReportedAndSkipped) {
     ASSERT_EQ(d.size(), 1u) << allMessages(d);
     EXPECT_NE(d[0].where.find("darkroom-loop.so"), std::string::npos) << d[0].str();
     EXPECT_NE(r.filter("FixtureScale"), nullptr);
+}
+
+// A host that needs some node types (`darkroom run` of a pipeline) loads
+// only the plugins that register them, and every capture backend; the scan
+// cache records each plugin's types, and a cache written before it did is
+// probed again to learn them. The rest can still be loaded.
+TEST_F(PluginIsolation, OnlyThePluginsOfTheWantedTypesAreLoaded) {
+    const std::set<std::string> wanted{"ColorMapping", "CinemaReader"};
+    const auto check = [&] {
+        Registry r;
+        const Diagnostics d = r.loadPlugins(Registry::defaultSearchPath(), &wanted);
+        EXPECT_TRUE(d.empty()) << allMessages(d);
+        EXPECT_NE(r.filter("ColorMapping"), nullptr);
+        EXPECT_NE(r.filter("CinemaReader"), nullptr);
+        EXPECT_EQ(r.filter("Movie"), nullptr);
+        EXPECT_EQ(r.filter("SSAO"), nullptr);
+        EXPECT_NE(r.backend("embree"), nullptr);
+        EXPECT_GT(r.setAside(), 10u);
+        EXPECT_TRUE(r.loadSetAside().empty());
+        EXPECT_NE(r.filter("Movie"), nullptr);
+        EXPECT_EQ(r.setAside(), 0u);
+    };
+    check();  // probed now
+    const std::string cache = test::readText(dir_.file("scan.tsv"));
+    EXPECT_NE(cache.find("\ttypes=ColorMapping\n"), std::string::npos) << cache;
+    EXPECT_NE(cache.find("\ttypes=backend:embree\n"), std::string::npos) << cache;
+    check();  // from the cache
+    // A cache without types, as written before they were recorded.
+    std::string old;
+    std::istringstream in(cache);
+    for (std::string line; std::getline(in, line);) old += line.substr(0, line.find("\ttypes=")) + "\n";
+    test::writeText(dir_.file("scan.tsv"), old);
+    check();
+    EXPECT_NE(test::readText(dir_.file("scan.tsv")).find("\ttypes=ColorMapping\n"), std::string::npos);
 }

@@ -3,6 +3,8 @@
 #include <darkroom/diagnostics.h>
 #include <darkroom/core/graph.h>
 
+#include <optional>
+#include <set>
 #include <string>
 
 namespace darkroom {
@@ -18,6 +20,11 @@ DARKROOM_API Graph parsePipeline(const std::string& text, const std::string& sou
 // Reads the file; a missing or unreadable file is an error diagnostic.
 DARKROOM_API Graph loadPipeline(const std::string& path, const Registry& registry,
                                 Diagnostics& diagnostics);
+
+// The node types a pipeline file names, read without a registry: which
+// plugins a run needs (Registry::loadPlugins). None when the file cannot be
+// read or parsed, or a node has no plain type: loadPipeline then says why.
+DARKROOM_API std::optional<std::set<std::string>> pipelineNodeTypes(const std::string& path);
 
 // Canonical text: saving a loaded canonical file reproduces it byte for byte,
 // and loading saved text reproduces the graph exactly.

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,17 @@ public:
     // the plugin's path and reason, and the plugin is skipped. New or changed
     // files are first loaded in a child process (darkroom-plugin-probe): one
     // that crashes, exits or hangs there is quarantined, not loaded.
-    Diagnostics loadPlugins(const std::vector<std::string>& searchPath);
+    //
+    // `wanted`, when given: the node types the host needs (a pipeline's). A
+    // plugin the scan knows registers none of them, and no capture backend,
+    // is not loaded but kept aside (dlopen of a plugin linking FFmpeg or
+    // pango costs more than many a pipeline's run); loadSetAside() loads
+    // those later, e.g. when a type turns out to be missing.
+    Diagnostics loadPlugins(const std::vector<std::string>& searchPath,
+                            const std::set<std::string>* wanted = nullptr);
+    // Loads the plugins loadPlugins set aside; none: nothing happens.
+    Diagnostics loadSetAside();
+    std::size_t setAside() const { return setAside_.size(); }
     // Loads one plugin file; returns false and appends a diagnostic on failure.
     bool loadPlugin(const std::string& path, Diagnostics& out);
     // Registers types from code linked into the host (tests, builtins).
@@ -87,6 +98,7 @@ private:
     mutable std::mutex portMutex_;
     mutable std::map<std::string, PortList> portCache_;
     std::vector<void*> handles_;
+    std::vector<std::string> setAside_;  // plugin files loadPlugins did not load (`wanted`)
 };
 
 }  // namespace darkroom
