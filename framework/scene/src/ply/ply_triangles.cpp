@@ -87,7 +87,8 @@ void decodeColumn(const Column& c, std::size_t recordSize, const Span& s, bool s
         const char* p = s.window + s.begin * recordSize + c.offset;
         if (where) {
             for (std::size_t i = s.first + s.begin; i < s.first + s.end; ++i, p += recordSize)
-                if (where[i] != mesh::kStripRestart) c.out[std::size_t(where[i]) * c.stride] = float(double(load<T>(p, swap)));
+                if (where[i] != mesh::kStripRestart)
+                    c.out[std::size_t(where[i]) * c.stride] = float(double(load<T>(p, swap)));
             return;
         }
         float* out = c.out + (s.first + s.begin) * c.stride;
@@ -188,7 +189,8 @@ public:
             std::size_t k = firstCell;
             while (k < object_.fields.size() && object_.fields[k].name != layout.cellNames[c]) ++k;
             if (k == object_.fields.size())
-                object_.fields.push_back({layout.cellNames[c], ScalarField::Association::Cell, std::vector<float>(face.count)});
+                object_.fields.push_back(
+                    {layout.cellNames[c], ScalarField::Association::Cell, std::vector<float>(face.count)});
             layout.cells[c].out = object_.fields[k].values.data();
         }
     }
@@ -207,9 +209,10 @@ public:
         for (std::size_t k = 0; k < vertex_.properties.size(); ++k) {
             const auto& p = vertex_.properties[k];
             const std::size_t axis = p.name == "x" ? 0 : p.name == "y" ? 1 : 2;
-            vertexColumns_.push_back(pointField_[k] < 0
-                                         ? Column{offset, p.type, object_.vertices.data() + axis, 4}
-                                         : Column{offset, p.type, object_.fields[std::size_t(pointField_[k])].values.data(), 1});
+            vertexColumns_.push_back(
+                pointField_[k] < 0
+                    ? Column{offset, p.type, object_.vertices.data() + axis, 4}
+                    : Column{offset, p.type, object_.fields[std::size_t(pointField_[k])].values.data(), 1});
             offset += mesh::sizeOf(p.type);
         }
         return newNumber_;
@@ -289,10 +292,11 @@ std::optional<SceneObject> readTriangles(const std::string& path, const std::str
     if (!trianglesRead) return std::nullopt;
     const std::uint32_t* newNumber = mesh.renumber().data();
     const std::size_t vertexSize = vertex->fixedSize();
-    const bool pointsRead = readRecords(file, vertexAt, vertex->count, vertexSize, windowBytes, buffer, [&](const Span& s) {
-        for (const auto& c : mesh.vertexColumns()) decodeColumn(c, vertexSize, s, swap, newNumber);
-        return true;
-    });
+    const bool pointsRead =
+        readRecords(file, vertexAt, vertex->count, vertexSize, windowBytes, buffer, [&](const Span& s) {
+            for (const auto& c : mesh.vertexColumns()) decodeColumn(c, vertexSize, s, swap, newNumber);
+            return true;
+        });
     if (!pointsRead) return std::nullopt;
     return mesh.take();
 }
