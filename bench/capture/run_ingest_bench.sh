@@ -38,7 +38,9 @@ channels:
 YAML
 rm -rf "$dir/out.cdb"
 echo "load before: $(cat /proc/loadavg)"
-/usr/bin/time -v "$darkroom" capture --profile "$dir/scene.yaml" -o "$dir/out.cdb" 2> "$dir/time.txt" || {
+profile=--profile
+"$darkroom" capture --help | grep -q -- --profile || profile=
+/usr/bin/time -v "$darkroom" capture $profile "$dir/scene.yaml" -o "$dir/out.cdb" 2> "$dir/time.txt" || {
     cat "$dir/time.txt"
     exit 1
 }
