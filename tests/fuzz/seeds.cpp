@@ -1,5 +1,5 @@
 // Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI, H5 with the
-// project's own writers; binary STL byte by byte), so that no binary file is committed:
+// project's own writers; binary STL and PLY byte by byte), so that no binary file is committed:
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
 #include "formats/h5_image.h"
@@ -60,6 +60,27 @@ std::string binaryStl(std::string header, const std::vector<std::array<float, 9>
     return header;
 }
 
+// A unit square of two triangles as binary little-endian PLY, with a point
+// scalar and a face scalar.
+std::string binaryTrianglePly() {
+    std::string s =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nproperty float height\nelement face 2\nproperty list uchar int vertex_indices\n"
+        "property float quality\nend_header\n";
+    const float points[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (const auto& p : points) {
+        for (float v : p) put(s, v);
+        put(s, p[0] + p[1]);
+    }
+    const std::int32_t faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    for (const auto& f : faces) {
+        put(s, std::uint8_t(3));
+        for (std::int32_t i : f) put(s, i);
+        put(s, 0.5f);
+    }
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -68,7 +89,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl", "h5"}) fs::create_directories(root / d);
+    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl", "h5", "ply"}) fs::create_directories(root / d);
     try {
         // EXR: float RGBA with a camera-free G-buffer channel, each compression.
         const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
@@ -140,6 +161,8 @@ int main(int argc, char** argv) {
         writeBytes(root / "stl" / "one-triangle.stl", binaryStl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}}));
         writeBytes(root / "stl" / "solid-header.stl",
                    binaryStl("solid exported", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}}));
+        // Binary PLY of triangles: what the direct reader (ply/ply_triangles.h) takes.
+        writeBytes(root / "ply" / "binary-triangles.ply", binaryTrianglePly());
     } catch (const std::exception& e) {
         std::cerr << "fuzz_seeds: " << e.what() << "\n";
         return 1;

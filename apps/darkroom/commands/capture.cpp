@@ -14,6 +14,8 @@
 #include <chrono>
 #include <cstdio>
 
+#include <sys/resource.h>
+
 namespace darkroom::cli {
 
 namespace {
@@ -34,7 +36,20 @@ void printSummary(const std::string& output, const workflows::CaptureSummary& s,
                    s.stepsPerRank[k].empty() ? std::string("no step") : "the steps " + s.stepsPerRank[k]);
 }
 
-int capture(const GlobalOptions& global, workflows::SceneCapture request) {
+// `--profile`: where the time before the first ray went, and the peak
+// memory, so that ingest of big meshes can be measured from the command line
+// (bench/capture/run_ingest_bench.sh reads this line).
+void printProfile(const workflows::CaptureSummary& s, double seconds) {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    fmt::print(stderr,
+               "darkroom: profile: scene read {:.2f} s, backend setup {:.2f} s, first ray at {:.2f} s, "
+               "ray tracing {:.2f} s, writing {:.2f} s, total {:.2f} s, peak RSS {} MiB\n",
+               s.sceneSeconds, s.setupSeconds, s.firstRaySeconds, s.renderSeconds, s.writeSeconds, seconds,
+               usage.ru_maxrss / 1024);
+}
+
+int capture(const GlobalOptions& global, workflows::SceneCapture request, bool profile) {
     ProcessGroup& group = processGroup();
     const Registry& registry = loadRegistry(global);
     ProgressBar bar("capture", showProgress(global));
@@ -60,9 +75,9 @@ int capture(const GlobalOptions& global, workflows::SceneCapture request) {
         return kRuntimeFailure;
     }
     bar.finish();
-    if (group.lead() && !global.quiet)
-        printSummary(request.output, summary, group.size(),
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (group.lead() && !global.quiet) printSummary(request.output, summary, group.size(), seconds);
+    if (profile) printProfile(summary, seconds);
     return kOk;
 }
 
@@ -80,7 +95,13 @@ void addCaptureCommand(CLI::App& app, GlobalOptions& global, Runner& run) {
         ->check(CLI::IsMember({"none", "zip", "zips", "piz", "rle", "pxr24", "b44", "dwaa", "dwab"}));
     cmd->add_flag("--half", a->half, "Store scalar channels as half floats (depth and ids stay exact)");
     cmd->add_option("-j,--threads", a->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
-    cmd->callback([&global, &run, a] { run = [&global, a] { return capture(global, *a); }; });
+    auto profile = std::make_shared<bool>(false);
+    cmd->add_flag("--profile", *profile,
+                  "Print where the time went (scene read, backend setup, first ray, ray tracing, writing) and "
+                  "the peak memory");
+    cmd->callback([&global, &run, a, profile] {
+        run = [&global, a, profile] { return capture(global, *a, *profile); };
+    });
 }
 
 }  // namespace darkroom::cli

@@ -75,7 +75,7 @@ struct Part {
     std::vector<std::uint32_t> cellIds;        // mesh cell per local cell
 };
 
-SceneObject finish(const Part& part, const PolyMesh& m, const std::vector<Scalar>& scalars, std::string name) {
+SceneObject finish(Part&& part, const PolyMesh& m, const std::vector<Scalar>& scalars, std::string name) {
     SceneObject o;
     o.name = std::move(name);
     o.representation = part.representation;
@@ -87,11 +87,11 @@ SceneObject finish(const Part& part, const PolyMesh& m, const std::vector<Scalar
         o.vertices[4 * i + 2] = m.points[3 * p + 2];
         o.vertices[4 * i + 3] = 0.f;
     }
-    o.indices = part.indices;
+    o.indices = std::move(part.indices);
     // An identity map is implied by an empty one; store it only when needed.
     bool identity = part.primitiveCell.size() == part.cellIds.size();
     for (std::size_t i = 0; identity && i < part.primitiveCell.size(); ++i) identity = part.primitiveCell[i] == i;
-    if (!identity) o.primitiveCell = part.primitiveCell;
+    if (!identity) o.primitiveCell = std::move(part.primitiveCell);
     for (const auto& s : scalars) {
         ScalarField f{s.name, s.association, {}};
         if (s.association == ScalarField::Association::Point) {
@@ -104,18 +104,6 @@ SceneObject finish(const Part& part, const PolyMesh& m, const std::vector<Scalar
         o.fields.push_back(std::move(f));
     }
     return o;
-}
-
-// Triangles keep the mesh's vertex numbering, compacted to the points they use.
-void compact(Part& part, std::size_t pointCount) {
-    std::vector<std::uint32_t> map(pointCount, kStripRestart);
-    for (auto& i : part.indices) {
-        if (map[i] == kStripRestart) {
-            map[i] = static_cast<std::uint32_t>(part.vertexSource.size());
-            part.vertexSource.push_back(i);
-        }
-        i = map[i];
-    }
 }
 
 Part surfacePart(const PolyMesh& m) {
@@ -153,7 +141,11 @@ Part surfacePart(const PolyMesh& m) {
             part.primitiveCell.push_back(local);
         }
     }
-    compact(part, m.pointCount());
+    std::size_t used = 0;
+    const std::vector<std::uint32_t> map = renumberByFirstUse(part.indices, m.pointCount(), used);
+    part.vertexSource.resize(used);
+    for (std::size_t p = 0; p < map.size(); ++p)
+        if (map[p] != kStripRestart) part.vertexSource[map[p]] = static_cast<std::uint32_t>(p);
     return part;
 }
 
@@ -191,6 +183,20 @@ Part vertexPart(const PolyMesh& m) {
 
 }  // namespace
 
+std::vector<std::uint32_t> renumberByFirstUse(std::vector<std::uint32_t>& indices, std::size_t pointCount,
+                                              std::size_t& used) {
+    // One serial pass: first use is an order, and the indices of real
+    // meshes are local enough that this runs at memory speed.
+    std::vector<std::uint32_t> map(pointCount, kStripRestart);
+    std::uint32_t next = 0;
+    for (auto& i : indices) {
+        if (map[i] == kStripRestart) map[i] = next++;
+        i = map[i];
+    }
+    used = next;
+    return map;
+}
+
 std::vector<SceneObject> buildSceneObjects(const PolyMesh& m, const std::string& name) {
     if (m.points.size() % 3 != 0) throw Error(m.source + ": point coordinates are not a multiple of 3");
     validate(m.vertices, "vertex", m);
@@ -219,9 +225,11 @@ std::vector<SceneObject> buildSceneObjects(const PolyMesh& m, const std::string&
         if (m.vertices.size() > 0) parts.push_back(vertexPart(m));
     }
     std::vector<SceneObject> out;
-    for (const auto& p : parts)
-        out.push_back(finish(p, m, scalars,
-                             parts.size() == 1 ? name : name + "/" + toString(p.representation)));
+    const std::size_t count = parts.size();
+    for (auto& p : parts) {
+        const Representation r = p.representation;
+        out.push_back(finish(std::move(p), m, scalars, count == 1 ? name : name + "/" + toString(r)));
+    }
     return out;
 }
 

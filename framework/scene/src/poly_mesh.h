@@ -44,6 +44,15 @@ struct PolyMesh {
     std::size_t pointCount() const { return points.size() / 3; }
 };
 
+// Renumbers a surface's `indices` (each below `pointCount`) to the points
+// they use, in the order of their first use, so that one surface gets one
+// numbering whichever format it was read from; points no triangle uses are
+// dropped (they would widen the bounds a camera frames). Returns each mesh
+// point's new number, kStripRestart for a dropped point; `used` receives
+// how many were kept.
+std::vector<std::uint32_t> renumberByFirstUse(std::vector<std::uint32_t>& indices, std::size_t pointCount,
+                                              std::size_t& used);
+
 // Validates indices and array sizes (throwing darkroom::Error naming `source`)
 // and builds up to three objects: the surface (polygons + strips), the lines
 // and the vertex cells; a mesh without any cell becomes one point cloud.

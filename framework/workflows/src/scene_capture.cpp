@@ -9,6 +9,7 @@
 #include <darkroom/workflows/capture_origin.h>
 
 #include <algorithm>
+#include <chrono>
 #include <thread>
 
 namespace darkroom::workflows {
@@ -62,19 +63,27 @@ CaptureSummary captureSceneFile(const SceneCapture& r, const Registry& registry,
     if (const std::string e = group.agreedError(scanError); !e.empty()) throw InputError(e);
     if (!series.steps.empty()) return captureSceneSeries(r, series, registry, group);
 
+    const auto start = std::chrono::steady_clock::now();
+    const auto since = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
     const PartitionedScene part = loadScene(r.scene, group);
+    const double sceneSeconds = since(start);
     const SceneDescription& scene = part.description;
     if (r.warn)
         for (const auto& w : scene.warnings) r.warn(w);
     if (scene.cameras.empty()) throw InputError(r.scene + ": the scene has no cameras");
 
     std::string error;
+    double setupSeconds = 0, firstRaySeconds = 0;
     std::unique_ptr<CaptureBackend> backend;
     CinemaWriterOptions wo;
     CaptureSettings settings;
     try {
         backend = registry.createBackend(scene.backend);
+        const auto setup = std::chrono::steady_clock::now();
         backend->setScene(scene.scene);
+        setupSeconds = since(setup);
         wo = writerOptions(r, scene, settings.attachments);
     } catch (const Error& e) {
         error = e.what();
@@ -97,10 +106,14 @@ CaptureSummary captureSceneFile(const SceneCapture& r, const Registry& registry,
     ro.registry = &registry;
     const std::unique_ptr<Context> ctx = makeStandaloneContext(ro, "capture");
     const RenderFn render = [&](const Camera& camera, const CaptureRequest& request) {
+        if (firstRaySeconds == 0) firstRaySeconds = since(start);
         return backend->render(camera, request, *ctx);
     };
-    const CaptureSummary summary = captureEntries(captureEntriesOf(scene), render, group, settings);
+    CaptureSummary summary = captureEntries(captureEntriesOf(scene), render, group, settings);
     if (writer) writer->finish();
+    summary.sceneSeconds = sceneSeconds;
+    summary.setupSeconds = setupSeconds;
+    summary.firstRaySeconds = firstRaySeconds;
     return summary;
 }
 

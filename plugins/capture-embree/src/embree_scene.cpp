@@ -139,34 +139,44 @@ void validateObject(const ObjectView& o, std::size_t index) {
     }
 }
 
-SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene)
+SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene,
+                   std::optional<BvhSettings> settings)
     : device_(std::move(device)) {
     if (!scene) scene = std::make_shared<const Scene>();
     for (std::size_t i = 0; i < scene->objects.size(); ++i) validateObject(scene->objects[i], i);
     for (const auto& o : scene->objects) objects_.push_back(viewOf(o));
     owner_ = std::move(scene);
-    create();
+    create(settings);
 }
 
-SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner)
+SceneBvh::SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner,
+                   std::optional<BvhSettings> settings)
     : device_(std::move(device)), objects_(std::move(objects)), owner_(std::move(owner)) {
     for (std::size_t i = 0; i < objects_.size(); ++i) validateObject(objects_[i], i);
-    create();
+    create(settings);
 }
 
-void SceneBvh::create() {
+void SceneBvh::create(std::optional<BvhSettings> settings) {
+    if (!settings) {
+        std::size_t primitives = 0;
+        for (const auto& o : objects_) primitives += o.primitiveCount;
+        settings = bvhSettingsFor(primitives);
+    }
+    settings_ = *settings;
     RTCDevice dev = device_->handle();
     scene_ = rtcNewScene(dev);
     device_->check("cannot create a scene");
-    // A capture renders many views of one scene, so a better BVH pays off.
-    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(scene_, settings_.quality == BvhSettings::Quality::High     ? RTC_BUILD_QUALITY_HIGH
+                                    : settings_.quality == BvhSettings::Quality::Medium ? RTC_BUILD_QUALITY_MEDIUM
+                                                                                        : RTC_BUILD_QUALITY_LOW);
     // Watertight ray-triangle tests: without it a ray can slip between two
     // triangles sharing an edge and hit the far side (1-3 crack pixels per
     // 768^2 view of the demo isosurface; tests/test_watertight.cpp). Costs
     // about 7 % of capture time (bench_capture, load 8-9 on 2 cores).
     // Ties in depth go to the lowest ids (nearest_hit_rule.h), through the
     // intersection context's filter.
-    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION |
+                                 (settings_.compact ? RTC_SCENE_FLAG_COMPACT : RTC_SCENE_FLAG_NONE));
 
     try {
         build();
@@ -212,6 +222,9 @@ void SceneBvh::build() {
                 break;
         }
         device_->check("cannot set up " + objectName(o.name, i));
+        // Low: each geometry gets its own BVH from Embree's Morton builder
+        // (under a two-level scene), several times faster to build than SAH.
+        if (settings_.quality == BvhSettings::Quality::Low) rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_LOW);
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(scene_, g, unsigned(i));
         rtcReleaseGeometry(g);

@@ -2,10 +2,13 @@
 // An Embree scene built from a darkroom::Scene. Kept free of Embree headers
 // (the handles are Embree's own opaque struct types) so that the backend's
 // other files and the benchmark can hold one without including Embree.
+#include "bvh_settings.h"
+
 #include <darkroom/scene.h>
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,23 +85,28 @@ public:
     // Validates every object (indices in range, field sizes) and throws
     // darkroom::Error naming the object on bad input, since Embree itself
     // would read out of bounds.
-    SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene);
+    // Without `settings`, bvhSettingsFor() the scene's primitive count.
+    SceneBvh(std::shared_ptr<Device> device, std::shared_ptr<const Scene> scene,
+             std::optional<BvhSettings> settings = std::nullopt);
     // Objects over arrays `owner` keeps alive (nullptr: the caller does).
-    SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner);
+    SceneBvh(std::shared_ptr<Device> device, std::vector<ObjectView> objects, std::shared_ptr<const void> owner,
+             std::optional<BvhSettings> settings = std::nullopt);
     ~SceneBvh();
     SceneBvh(const SceneBvh&) = delete;
     SceneBvh& operator=(const SceneBvh&) = delete;
 
     RTCSceneTy* handle() const { return scene_; }
     const std::vector<ObjectView>& objects() const { return objects_; }
+    const BvhSettings& settings() const { return settings_; }
 
 private:
-    void create();
+    void create(std::optional<BvhSettings> settings);
     void build();
     std::shared_ptr<Device> device_;
     std::vector<ObjectView> objects_;
     std::shared_ptr<const void> owner_;
     RTCSceneTy* scene_ = nullptr;
+    BvhSettings settings_;
 };
 
 // Primitives Embree sees for an object (triangles, segments or spheres).

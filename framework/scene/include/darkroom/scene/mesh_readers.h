@@ -14,6 +14,7 @@
 #include <darkroom/export.h>
 #include <darkroom/scene.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,17 @@ DARKROOM_API std::vector<SceneObject> readMesh(const std::string& path,
                                                std::vector<std::string>* warnings = nullptr);
 
 DARKROOM_API std::vector<SceneObject> readPly(const std::string& path);
+
+// How readPly reads a binary PLY of triangles. The defaults are readMesh's;
+// tests and benchmarks compare the two ways, which give the same objects.
+struct PlyReadOptions {
+    // true: straight into the surface's arrays, a window of the file at a
+    // time, decoded in parallel; false: the general reader (serial, the whole
+    // file in memory, then an intermediate mesh), as for every other PLY.
+    bool direct = true;
+    std::size_t windowBytes = std::size_t(32) << 20;
+};
+DARKROOM_API std::vector<SceneObject> readPly(const std::string& path, const PlyReadOptions& options);
 DARKROOM_API std::vector<SceneObject> readObj(const std::string& path);
 // ASCII OFF and its COFF, NOFF, CNOFF, STOFF variants (binary OFF is refused).
 DARKROOM_API std::vector<SceneObject> readOff(const std::string& path);

@@ -72,6 +72,11 @@ struct CaptureSummary {
     double renderSeconds = 0;     // the slowest process's ray tracing
     double compositeSeconds = 0;  // the slowest process's compositing (several processes)
     double writeSeconds = 0;      // the lead's writing
+    // Where the time before the first ray went (`darkroom capture --profile`),
+    // on this process, from the start of captureSceneFile; 0 for a time series.
+    double sceneSeconds = 0;     // reading the scene file and its meshes
+    double setupSeconds = 0;     // the backend's setScene (Embree's BVH build)
+    double firstRaySeconds = 0;  // until the first render began
     // A time series whose steps the ranks shared (docs/scene-format.md,
     // "Time series"): per rank, the labels of the steps it captured whole
     // ("time=0, time=3"); empty when every process took part in every step.

@@ -1,0 +1,42 @@
+#pragma once
+// How Embree builds a scene's BVH, chosen by the scene's size and the memory
+// at hand. Every choice gives the same pixels (the ray-triangle test and the
+// tie rule do not depend on the BVH; tests/test_bvh_settings.cpp); they trade
+// build time, memory and trace time, as measured in docs/performance.md
+// ("Capture ingest") with bench/capture/bench_bvh_settings.
+#include <cstddef>
+#include <cstdint>
+
+namespace darkroom::embree {
+
+struct BvhSettings {
+    // High: SAH (spatial splits where Embree has them); Medium: SAH; Low: a
+    // two-level scene whose geometries Embree's Morton builder builds.
+    enum class Quality : std::uint8_t { Low, Medium, High };
+    Quality quality = Quality::High;
+    // RTC_SCENE_FLAG_COMPACT: leaves index the shared vertex arrays instead
+    // of holding their own copy of each triangle.
+    bool compact = false;
+};
+
+// From this many primitives on, a scene is "big": below it the BVH's memory
+// is small beside any machine's, and the best BVH is built.
+inline constexpr std::size_t kBigScenePrimitives = std::size_t(4) << 20;
+
+// Bytes per primitive Embree peaks at while building a big scene of
+// triangles (on top of the scene's own arrays), measured on a 33.5M-triangle
+// height field: Low + compact 53.7, Medium + compact 34.8.
+inline constexpr double kLowCompactPeakBytes = 56.0;
+
+// Small scenes: High. Big ones: compact, and Low (several times faster to
+// build) when its peak takes at most half of `availableBytes`, else Medium
+// (a third less memory).
+BvhSettings bvhSettingsFor(std::size_t primitives, std::uint64_t availableBytes);
+
+// bvhSettingsFor(primitives, the memory this machine has available now).
+BvhSettings bvhSettingsFor(std::size_t primitives);
+
+// MemAvailable from /proc/meminfo; 0 when it cannot be read.
+std::uint64_t availableMemoryBytes();
+
+}  // namespace darkroom::embree
