@@ -131,6 +131,7 @@ std::string joinTypes(const std::vector<std::string>& types) {
 }
 
 constexpr const char* kTypesField = "types=";
+constexpr const char* kTypesUnlisted = "types?";  // probed, but the types could not be listed
 
 }  // namespace
 
@@ -175,6 +176,7 @@ PluginScan::PluginScan() : probe_(findProbe()), cacheFile_(cachePath()) {
         e.verdict.reason = f.size() > 4 ? f[4] : "";
         if (f.size() > 5 && f[5].rfind(kTypesField, 0) == 0)
             e.verdict.types = splitTypes(f[5].substr(std::string(kTypesField).size()));
+        e.typesAsked = e.verdict.types || (f.size() > 5 && f[5] == kTypesUnlisted);
         entries_[f[0]] = e;
     }
 }
@@ -189,12 +191,13 @@ ProbeVerdict PluginScan::check(const std::string& path) {
     // A verdict of a cache written before types were recorded is probed
     // again, once, to learn them.
     if (auto it = entries_.find(key); it != entries_.end() && it->second.mtimeNs == mtime &&
-                                      it->second.size == size && (!it->second.verdict.ok || it->second.verdict.types))
+                                      it->second.size == size && (!it->second.verdict.ok || it->second.typesAsked))
         return it->second.verdict;
     Entry e;
     e.mtimeNs = mtime;
     e.size = size;
     e.verdict = runProbe(probe_, path, 20.0);
+    e.typesAsked = true;
     entries_[key] = e;
     dirty_ = true;
     return e.verdict;
@@ -209,7 +212,10 @@ void PluginScan::save() {
             if (c == '\t' || c == '\n') c = ' ';
         text += path + "\t" + std::to_string(e.mtimeNs) + "\t" + std::to_string(e.size) + "\t" +
                 (e.verdict.ok ? "ok" : "quarantined") + "\t" + reason +
-                (e.verdict.types ? "\t" + std::string(kTypesField) + joinTypes(*e.verdict.types) : "") + "\n";
+                (e.verdict.types ? "\t" + std::string(kTypesField) + joinTypes(*e.verdict.types)
+                 : e.typesAsked  ? "\t" + std::string(kTypesUnlisted)
+                                 : std::string()) +
+                "\n";
     }
     std::error_code ec;
     fs::create_directories(fs::path(cacheFile_).parent_path(), ec);

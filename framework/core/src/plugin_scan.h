@@ -50,6 +50,9 @@ private:
         std::int64_t mtimeNs = 0;
         std::uintmax_t size = 0;
         ProbeVerdict verdict;
+        // Probed by a probe that lists types (it may have listed none it
+        // could: then the plugin is always loaded, and not probed again).
+        bool typesAsked = false;
     };
     std::string probe_;
     std::string cacheFile_;

@@ -70,9 +70,9 @@ BatchSummary shadeEntries(Graph& graph, Evaluator& evaluator, EvaluatorOptions o
     BatchSummary summary;
     summary.selected = p.rows.size();
     summary.kept = p.rows.size() - todo.size();
-    summary.inFlight = lanes;
+    summary.inFlight = lanesInFlight(lanes, todo.size());
     const std::string records =
-        shadeOverLanes(graph, evaluator, settings, p, todo, group, cb, lanes, summary.failure);
+        shadeOverLanes(graph, evaluator, settings, p, todo, group, cb, summary.inFlight, summary.failure);
     bool anyFailed = false;
     const std::vector<std::string> all = gatherRecords(records, bool(summary.failure), group, anyFailed);
     summary.failedElsewhere = anyFailed && !summary.failure;

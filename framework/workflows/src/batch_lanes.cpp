@@ -17,11 +17,8 @@ namespace darkroom::workflows::batch {
 
 int lanesFor(const Graph& g, const BatchSettings& settings, const ProcessGroup& group) {
     if (group.size() > 1) return 1;
-    for (const Node& node : g.nodes()) {
-        if (!isFedARow(g, node)) continue;
-        for (const auto& port : g.ports(node).inputs)
-            if (port.type == PortType::OutputPath && !g.edgesInto(node.name, port.name).empty()) return 1;
-    }
+    for (const Node& node : g.nodes())
+        if (writesADatabaseThroughAnEdge(g, node)) return 1;
     return settings.inFlight > 0 ? settings.inFlight : kAutomaticLanes;
 }
 
@@ -142,15 +139,13 @@ bool shadeEntry(Lane& lane, std::size_t position, const BatchSettings& s, const 
 
 // One lane: entries from the queue until none is left or a lane failed, as
 // one sequence of the lane's evaluator. `afterFirst`, when given, is called
-// before each entry but the first (the other lanes start once the first
-// entry is written).
+// once the first entry is shaded (the other lanes start then).
 void runLane(Lane& lane, const BatchSettings& s, const Plan& p, const std::vector<std::size_t>& todo,
              const BatchCallbacks& cb, std::size_t sequenceLength, const Evaluator& caller,
              LaneState& state, const std::function<void()>& afterFirst) {
     EvaluatorSequence sequence(*lane.evaluator, SequenceInfo{sequenceLength});
     bool ok = true;
     for (bool first = true; ok; first = false) {
-        if (!first && afterFirst) afterFirst();
         // The caller's cancel (Evaluator::cancel) reaches every lane.
         if (caller.isCancelled()) state.cancel();
         const auto next = state.next();  // an index into todo
@@ -158,6 +153,7 @@ void runLane(Lane& lane, const BatchSettings& s, const Plan& p, const std::vecto
         const std::size_t position = todo[*next];
         ok = shadeEntry(lane, position, s, p, cb, lane.options, state);
         if (ok) state.finished(lane.index, position);
+        if (ok && first && afterFirst) afterFirst();
     }
     if (!ok || state.failure() || state.cancelled()) return;  // the sequence ends as not completed
     try {
@@ -252,7 +248,6 @@ std::vector<Lane> makeLanes(const Graph& graph, Evaluator& evaluator, const Plan
 std::string shadeOverLanes(const Graph& graph, Evaluator& evaluator, const BatchSettings& settings, const Plan& p,
                            const std::vector<std::size_t>& todo, ProcessGroup& group, const BatchCallbacks& cb,
                            int lanes, std::exception_ptr& failure) {
-    lanes = std::max(1, std::min<int>(lanes, int(std::max<std::size_t>(todo.size(), 1))));
     std::optional<LaneWarnings> warnings;
     if (p.options.onWarning) warnings.emplace(p.options.onWarning);
     std::vector<Lane> all = makeLanes(graph, evaluator, p, group, lanes, warnings ? &*warnings : nullptr);
@@ -271,13 +266,12 @@ std::string shadeOverLanes(const Graph& graph, Evaluator& evaluator, const Batch
         // for every later one (a database range, plugins loaded) is made once.
         std::vector<std::jthread> threads;
         const auto startOthers = [&] {
-            for (std::size_t k = threads.size() + 1; k < all.size(); ++k)
-                threads.emplace_back([&run, &all, k] { run(all[k], {}); });
+            for (std::size_t k = 1; k < all.size(); ++k) threads.emplace_back([&run, &all, k] { run(all[k], {}); });
         };
         run(all[0], startOthers);  // on the calling thread: under mpirun, the only lane, and the group's calls stay on it
     }
     if (warnings) warnings->finish(state.shadedPerLane());
-    // Lane 0's evaluator is the caller's: its options and cancel flag go back as they were.
+    // Lane 0's evaluator is the caller's: its options go back as they were.
     evaluator.setOptions(p.options);
     if (state.cancelled()) throw Cancelled();
     failure = state.failure();

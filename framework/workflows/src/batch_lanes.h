@@ -16,6 +16,7 @@
 #include <darkroom/core/process_group.h>
 #include <darkroom/workflows/batch.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <string>
@@ -30,11 +31,16 @@ namespace darkroom::workflows::batch {
 inline constexpr int kAutomaticLanes = 3;
 int lanesFor(const Graph& g, const BatchSettings& settings, const ProcessGroup& group);
 
+// The lanes that have entries to shade: `lanes`, no more than `entries`, at least 1.
+inline int lanesInFlight(int lanes, std::size_t entries) {
+    return entries < std::size_t(lanes) ? std::max(1, int(entries)) : lanes;
+}
+
 // The staging database a writer of `group`'s process writes through lane `lane` of `lanes`.
 int writerIndex(const ProcessGroup& group, int lane, int lanes);
 
 // Shades this process's share of the positions `todo` of p.rows over
-// `lanes` lanes: lane 0 with `evaluator`, the others with evaluators of
+// `lanes` lanes (no more than the entries: lanesInFlight): lane 0 with `evaluator`, the others with evaluators of
 // their own, each with its own copy of `graph` (the batch's common edits
 // made). Each lane's entries are one sequence of its evaluator: a
 // CinemaWriter holds its database across them and lets it go as the lane

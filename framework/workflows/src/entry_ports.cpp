@@ -28,4 +28,15 @@ bool isFedARow(const Graph& g, const Node& n) {
     return false;
 }
 
+const PortSpec* writerDatabase(const Graph& g, const Node& n) {
+    for (const PortSpec& in : g.ports(n).inputs)
+        if (in.type == PortType::OutputPath) return &in;
+    return nullptr;
+}
+
+bool writesADatabaseThroughAnEdge(const Graph& g, const Node& n) {
+    const PortSpec* database = isFedARow(g, n) ? writerDatabase(g, n) : nullptr;
+    return database && !g.edgesInto(n.name, database->name).empty();
+}
+
 }  // namespace darkroom::workflows

@@ -29,4 +29,12 @@ bool choosesEntry(const Graph& g, const Node& n, const PortSpec& input);
 // Whether an edge feeds one of the node's Row inputs.
 bool isFedARow(const Graph& g, const Node& n);
 
+// The output-path input (PortType::OutputPath) of a database writer, its
+// database; nullptr when `n` has none.
+const PortSpec* writerDatabase(const Graph& g, const Node& n);
+
+// Whether `n` is a database writer (fed a row) whose database comes through
+// an edge: it cannot be given a staging database per rank or lane.
+bool writesADatabaseThroughAnEdge(const Graph& g, const Node& n);
+
 }  // namespace darkroom::workflows

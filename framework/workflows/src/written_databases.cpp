@@ -43,10 +43,8 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
     std::vector<DatabaseSink> out;
     for (const auto& name : sinks) {
         const Node* n = g.node(name);
-        const auto& inputs = g.ports(*n).inputs;
-        const auto database = std::find_if(inputs.begin(), inputs.end(),
-                                           [](const PortSpec& p) { return p.type == PortType::OutputPath; });
-        if (!isFedARow(g, *n) || database == inputs.end()) continue;
+        const PortSpec* database = writerDatabase(g, *n);
+        if (!isFedARow(g, *n) || !database) continue;
         DatabaseSink sink{name,
                           n->type,
                           database->name,
@@ -54,7 +52,7 @@ std::vector<DatabaseSink> databaseSinks(const Graph& g, const std::vector<std::s
                           valueOf(g, *n, "mode"),
                           valueOf(g, *n, "format"),
                           g.ports(*n).input("pipeline") ? valueOf(g, *n, "pipeline") : std::string()};
-        if (!g.edgesInto(name, database->name).empty()) {
+        if (writesADatabaseThroughAnEdge(g, *n)) {
             if (!overRanks) continue;
             throw Error(label(sink) + ": its database comes through an edge; under mpirun give it as a "
                                       "parameter, so that the runner can stage each rank's entries");

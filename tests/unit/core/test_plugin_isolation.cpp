@@ -125,3 +125,24 @@ TEST_F(PluginIsolation, OnlyThePluginsOfTheWantedTypesAreLoaded) {
     check();
     EXPECT_NE(test::readText(dir_.file("scan.tsv")).find("\ttypes=ColorMapping\n"), std::string::npos);
 }
+
+// A plugin whose types the probe cannot list (here: built for another ABI,
+// which the host refuses by itself) is always loaded, and its verdict is
+// kept as it is: the scan does not probe it again at every start.
+TEST_F(PluginIsolation, APluginWhoseTypesCannotBeListedIsProbedOnce) {
+    const std::set<std::string> wanted{"FixtureScale"};
+    {
+        Registry r;
+        const Diagnostics d = r.loadPlugins({fixture("wrong-abi"), fixture("good")}, &wanted);
+        ASSERT_EQ(d.size(), 1u) << allMessages(d);  // loaded, so refused by the host, naming it
+        EXPECT_EQ(d[0].where, fixture("wrong-abi"));
+        EXPECT_EQ(r.setAside(), 0u);
+    }
+    const std::string cache = test::readText(dir_.file("scan.tsv"));
+    EXPECT_NE(cache.find("darkroom-fixture-wrong-abi.so\t"), std::string::npos) << cache;
+    EXPECT_NE(cache.find("\ttypes?\n"), std::string::npos) << cache;
+    // From the cache: the same, and the cache is not rewritten.
+    Registry again;
+    EXPECT_EQ(again.loadPlugins({fixture("wrong-abi"), fixture("good")}, &wanted).size(), 1u);
+    EXPECT_EQ(test::readText(dir_.file("scan.tsv")), cache);
+}

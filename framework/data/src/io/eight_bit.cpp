@@ -37,13 +37,13 @@ std::vector<std::string> defaultChannels(const Buffer& image, const std::string&
 
 // The 8-bit code of alpha, stored linearly: lround(v * 255), NaN and v <= 0
 // -> 0. For m >= 0, lround(m) is floor(m + 0.5) computed exactly in double.
-inline unsigned char linearCode(float v) {
+inline unsigned char encodeAlpha(float v) {
     if (!(v > 0.0f)) return 0;
     if (v >= 1.0f) return 255;
     return (unsigned char)(int)(double(v * 255.0f) + 0.5);
 }
 
-inline unsigned char sRgbCode(const SrgbCodeTable& srgb, float v) {
+inline unsigned char encodeColour(const SrgbCodeTable& srgb, float v) {
     if (!(v > 0.0f)) return 0;  // also NaN
     if (v >= 1.0f) return 255;
     return srgb.code(v);
@@ -81,9 +81,9 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
             const float* s = src[std::size_t(c)] + std::size_t(y) * w;
             unsigned char* d = row + c;
             if (out.alpha && c == n - 1)
-                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = linearCode(s[x]);
+                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = encodeAlpha(s[x]);
             else
-                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = sRgbCode(srgb, s[x]);
+                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = encodeColour(srgb, s[x]);
         }
     });
     return out;
