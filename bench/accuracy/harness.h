@@ -29,6 +29,7 @@ struct Options {
     std::string imageDir = "";   // failure pictures go here (PNG); empty = none
     int threads = 0;             // 0 = all hardware threads
     int repeats = 3;             // timing: best of this many runs
+    std::vector<std::string> families;  // the ao sweep's stress families (empty: all it measures); for development
 };
 
 // One measured number. Columns of the CSV, in this order:

@@ -1,8 +1,8 @@
 // bench_accuracy: runs the accuracy sweeps (issue 6) and writes one CSV per
 // sweep. scripts/accuracy.sh runs every sweep and plots the result.
 //
-//   bench_accuracy [--sweep NAME]... [--size N] [--quick] [--out DIR]
-//                  [--images DIR] [--threads N] [--repeats N] [--list]
+//   bench_accuracy [--sweep NAME]... [--family NAME]... [--size N] [--quick]
+//                  [--out DIR] [--images DIR] [--threads N] [--repeats N] [--list]
 #include "harness.h"
 
 #include <darkroom/error.h>
@@ -18,8 +18,8 @@ namespace {
 
 int usage(const std::string& why) {
     std::cerr << "bench_accuracy: " << why << "\n"
-              << "usage: bench_accuracy [--sweep NAME]... [--size N] [--quick] [--out DIR] [--images DIR]\n"
-              << "                      [--threads N] [--repeats N] [--list]\n";
+              << "usage: bench_accuracy [--sweep NAME]... [--family NAME]... [--size N] [--quick] [--out DIR]\n"
+              << "                      [--images DIR] [--threads N] [--repeats N] [--list]\n";
     return 2;
 }
 
@@ -53,6 +53,9 @@ int main(int argc, char** argv) {
         } else if (a == "--sweep") {
             if (!next(v)) return usage("--sweep needs a name");
             selected.push_back(v);
+        } else if (a == "--family") {
+            if (!next(v)) return usage("--family needs a stress family name");
+            options.families.push_back(v);
         } else if (a == "--size") {
             if (!next(v) || !parseInt(v, options.size) || options.size < 16) return usage("--size needs an integer >= 16");
         } else if (a == "--threads") {

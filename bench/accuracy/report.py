@@ -425,6 +425,51 @@ def chart_list(paths, doc_dir, width=None):
                      for p in paths if p)
 
 
+THIN_FAMILIES = ("particles", "streamlines")
+THIN_TARGET = 0.05
+
+
+def beats_ray_tracing(rows):
+    """Issue 31's scoreboard: per particle and streamline scene of the ao sweep,
+    the fastest image-space or point-list setting with RMSE <= THIN_TARGET that
+    every ray-traced setting at no more time per megapixel is worse than."""
+    sel = [r for r in timed(rows) if r["sweep"] == "ao" and r["family"] in THIN_FAMILIES and r["region"] == "all"
+           and r["metric"] == "rmse" and math.isfinite(r["value"])]
+    scenes = sorted({r["scene"] for r in sel}, key=lambda s: (s.split("-")[0], number(re.sub(r"^\D+", "", s.split("-")[-1]))))
+    if not scenes:
+        return ""
+    lines = ["| scene | fastest setting that beats ray tracing | its RMSE @ time | best ray-traced at no more time | "
+             "horizon 4 × 8 (default) | point list |", "|---|---|---|---|---|---|"]
+    met = 0
+    for scene in scenes:
+        mine = [r for r in sel if r["scene"] == scene]
+        traced = [r for r in mine if r["method"].startswith("ray traced")]
+        winners = []
+        for r in mine:
+            if r["method"].startswith("ray traced") or r["value"] > THIN_TARGET:
+                continue
+            rivals = [t for t in traced if t["ms_per_mpix"] <= r["ms_per_mpix"]]
+            if all(t["value"] > r["value"] for t in rivals):
+                best_rival = min(rivals, key=lambda t: t["value"]) if rivals else None
+                winners.append((r["ms_per_mpix"], r, best_rival))
+        horizon = [r for r in mine if r["method"] == "horizon" and r["setting"] == "slices=4 steps=8"]
+        hcell = f"{horizon[0]['value']:.3g} @ {horizon[0]['ms_per_mpix']:.3g} ms" if horizon else "–"
+        listed = [r for r in mine if r["method"] == "point list"]
+        hcell += " | " + (f"{listed[0]['value']:.3g} @ {listed[0]['ms_per_mpix']:.3g} ms" if listed else "–")
+        if winners:
+            met += 1
+            _, w, rival = min(winners, key=lambda x: x[0])
+            rcell = f"{rival['setting']}: {rival['value']:.3g} @ {rival['ms_per_mpix']:.3g} ms" if rival else "none as fast"
+            lines.append(f"| {scene} | {w['method']} ({w['setting']}) | {w['value']:.3g} @ {w['ms_per_mpix']:.3g} ms | "
+                         f"{rcell} | {hcell} |")
+        else:
+            lines.append(f"| {scene} | **none** | – | – | {hcell} |")
+    lines.append("")
+    lines.append(f"**{met} of {len(scenes)}** thin scenes have a method with RMSE ≤ {THIN_TARGET:g} that every "
+                 "ray-traced setting at no more time per megapixel is worse than.")
+    return "\n".join(lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data", required=True, help="folder with bench_accuracy's CSV files")
@@ -449,6 +494,7 @@ def main():
         blocks[f"failures:{sweep}"] = failure_table(rows, sweep, a.images, doc_dir)
     blocks["scenes"] = chart_list([contact_sheet(rows, a.images, a.images)], doc_dir)
     blocks["regions:ao"] = region_table(rows, "ao", ["rmse", "bias"])
+    blocks["thin:ao"] = beats_ray_tracing(rows)
     blocks["regions:normals"] = region_table(rows, "normals", ["angle_median", "angle_p95", "share_above_5"])
     blocks["regions:fxaa"] = region_table(rows, "fxaa", ["rmse"])
     blocks["regions:dof"] = region_table(rows, "dof", ["rmse"])

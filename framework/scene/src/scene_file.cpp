@@ -356,7 +356,9 @@ private:
             scaleVertexNormals(shading[i], scale);
             if (rep) p = scenefile::restyle(std::move(p), *rep);
             if (p.representation != Representation::Surface) VertexNormals().swap(shading[i]);
-            if (asPointList && p.representation != Representation::Points)
+            // A surface's vertices become spheres; lines stay lines (their
+            // list joins each polyline's points, for PointListAO).
+            if (asPointList && p.representation == Representation::Surface)
                 p = scenefile::restyle(std::move(p), Representation::Points);
             if (radius) scenefile::setRadius(p, *radius);
             if (asPointList) {

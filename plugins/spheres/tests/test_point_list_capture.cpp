@@ -103,3 +103,33 @@ TEST(PointListCapture, StoredBesideEachEntryAndDrawnLikeEmbreesSpheres) {
         EXPECT_LE(grazing, 4) << entry;
     }
 }
+
+TEST(PointListCapture, LinesKeptAsAListKeepTheirPolylines) {
+    test::TempDir dir;
+    test::writeText(dir.file("lines.yaml"),
+                    "objects:\n"
+                    "  - generator: isosurface\n"
+                    "    parameters: {resolution: 24}\n"
+                    "  - generator: streamlines\n"
+                    "    parameters: {count: 6}\n"
+                    "    store: pointList\n"
+                    "cameras:\n"
+                    "  resolution: [64, 48]\n"
+                    "  grid: {phi: [0], theta: [20], distance: 4.6, target: [0, 0, 0], up: [0, 0, 1]}\n");
+    const auto r = test::runDarkroom({"-q", "capture", dir.file("lines.yaml"), "-o", dir.file("lines.cdb")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::vector<SceneObject> lines = generate("streamlines", {{"count", "6"}});
+    ASSERT_EQ(lines.size(), 1u);
+    const auto db = CinemaDatabase::open(dir.file("lines.cdb"));
+    const PointList list = readPointList(db.productPath(0, "FILE_streamlines"));
+    ASSERT_EQ(list.size(), lines[0].vertexCount());
+    const ScalarField* line = nullptr;
+    for (const ScalarField& f : list.fields)
+        if (f.name == "line") line = &f;
+    ASSERT_NE(line, nullptr) << "no line column";
+    // Every segment of the object joins two consecutive rows of one line, and
+    // there are as many lines as polylines.
+    for (const std::uint32_t s : lines[0].indices) EXPECT_EQ(line->values[s], line->values[s + 1]) << s;
+    const float lastLine = *std::max_element(line->values.begin(), line->values.end());
+    EXPECT_EQ(lastLine, 5.0f);
+}

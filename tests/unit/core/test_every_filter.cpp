@@ -62,7 +62,7 @@ Fixture fixtureFor(const std::string& type) {
             in["row"] = {Value("phi=0")};
             in["database"] = {Value(dir.file("written.cdb"))};
         };
-    if (type == "Spheres")
+    if (type == "Spheres" || type == "PointListAO")
         return [](const test::TempDir& dir, auto& in) {
             test::writeText(dir.file("points.csv"), "x,y,z,radius,value\n0,0,2,0.5,1\n");
             in["points"] = {Value(dir.file("points.csv"))};

@@ -66,16 +66,49 @@ PointList readPointListCsv(const std::string& path) {
     return p;
 }
 
+namespace {
+
+// For a lines object, the polyline of each vertex (0, 1, ... in order of
+// first use; -1 for a vertex on no segment): segment k joins vertices
+// indices[k] and indices[k] + 1, so a run of segments each starting where
+// the last ended is one polyline. Empty for other objects.
+std::vector<long> lineNumbers(const SceneObject& object) {
+    if (object.representation != Representation::Lines) return {};
+    std::vector<long> line(object.vertexCount(), -1);
+    long current = -1;
+    std::size_t previousEnd = std::size_t(-1);
+    for (const std::uint32_t start : object.indices) {
+        if (std::size_t(start) + 1 >= line.size()) continue;
+        if (start != previousEnd || line[start] < 0) line[start] = ++current;
+        line[start + 1] = line[start];
+        previousEnd = std::size_t(start) + 1;
+    }
+    return line;
+}
+
+}  // namespace
+
 std::string pointListCsv(const SceneObject& object) {
     std::vector<const ScalarField*> fields;
     for (const ScalarField& f : object.fields)
         if (f.values.size() == object.vertexCount()) fields.push_back(&f);
+    // A lines object keeps its polylines: consecutive rows with one `line`
+    // value are joined by a segment (readers that do not know the column
+    // see a field).
+    const std::vector<long> line = lineNumbers(object);
+    if (!line.empty())
+        for (const ScalarField* f : fields)
+            if (f->name == "line")
+                throw Error("the lines object '" + object.name + "' has a field named 'line', the column its point list "
+                            "joins lines by; rename the field");
     std::string out = "x,y,z,radius";
+    if (!line.empty()) out += ",line";
     for (const ScalarField* f : fields) out += "," + quoteCsvCell(f->name);
     out += "\n";
     for (std::size_t v = 0; v < object.vertexCount(); ++v) {
         // Shortest text that reads back to the same float.
         for (int k = 0; k < 4; ++k) out += fmt::format("{}{}", k ? "," : "", object.vertices[4 * v + std::size_t(k)]);
+        if (!line.empty()) out += line[v] < 0 ? std::string(",") : fmt::format(",{}", line[v]);
         for (const ScalarField* f : fields) {
             const float x = f->values[v];
             out += "," + (std::isnan(x) ? std::string() : fmt::format("{}", x));

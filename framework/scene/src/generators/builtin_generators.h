@@ -39,6 +39,19 @@ struct ParticleOptions {
 ParticleOptions readParticleOptions(GeneratorParams& p);
 SceneObject buildParticles(const ParticleOptions& o);
 
+struct TracerOptions {
+    int count = 20000;
+    double radius = 0.006;
+    double release = 3.0;       // particles are released over [0, release] and carried until `release`
+    double step = 0.02;         // RK4 time step
+    Vec3 source{0.35, -0.25, 0.1};
+    double sourceRadius = 0.15;
+    double a = 1.7320508075688772, b = 1.4142135623730951, c = 1.0;
+    std::uint64_t seed = 11;
+};
+TracerOptions readTracerOptions(GeneratorParams& p);
+SceneObject buildTracers(const TracerOptions& o);
+
 struct MaximaOptions {
     double radius = 0.035;
     int resolution = 40;     // search grid samples per axis

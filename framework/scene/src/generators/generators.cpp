@@ -41,6 +41,7 @@ const std::vector<std::pair<std::string, Builder>>& builders() {
         {"isosurface", [](GeneratorParams& p) { return std::vector{buildIsosurface(readIsosurfaceOptions(p))}; }},
         {"streamlines", [](GeneratorParams& p) { return std::vector{buildStreamlines(readStreamlineOptions(p))}; }},
         {"particles", [](GeneratorParams& p) { return std::vector{buildParticles(readParticleOptions(p))}; }},
+        {"tracers", [](GeneratorParams& p) { return std::vector{buildTracers(readTracerOptions(p))}; }},
         {"maxima", [](GeneratorParams& p) { return std::vector{buildMaxima(readMaximaOptions(p))}; }},
         {"plane", [](GeneratorParams& p) { return std::vector{buildPlane(readPlaneOptions(p))}; }},
         {"demo", demo},

@@ -1,0 +1,110 @@
+#include "point_list_ao.h"
+
+#include "list_occlusion.h"
+#include "list_primitives.h"
+
+#include <darkroom/depth_input.h>
+#include <darkroom/error.h>
+#include <darkroom/data/cinema/row.h>
+#include <darkroom/scene/point_list.h>
+#include <darkroom/view_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace darkroom {
+
+namespace {
+
+
+
+// World-space normal planes: the input's N.x/N.y/N.z, or reconstructed from
+// depth (receivers on the list's own primitives get theirs from the list).
+struct Normals {
+    std::vector<float> planes[3];
+    const float* at[3] = {nullptr, nullptr, nullptr};
+    bool captured = false;
+};
+
+Normals receiverNormals(Context& ctx, const Buffer& in, const Camera& camera, const float* z) {
+    Normals n;
+    const char* names[3] = {"N.x", "N.y", "N.z"};
+    n.captured = in.hasChannel(names[0]) && in.hasChannel(names[1]) && in.hasChannel(names[2]);
+    if (n.captured) {
+        for (int k = 0; k < 3; ++k) n.at[k] = in.requireFloat(names[k]);
+        return n;
+    }
+    NormalOutputs out;
+    for (int k = 0; k < 3; ++k) {
+        n.planes[k].resize(in.pixelCount());
+        out.world[k] = n.planes[k].data();
+        n.at[k] = n.planes[k].data();
+    }
+    reconstructNormals(ctx, z, in.width(), in.height(), camera, NormalMethod::Extrapolated, out);
+    return n;
+}
+
+}  // namespace
+
+void PointListAo::execute(Context& ctx) {
+    const BufferPtr in = ctx.get(image_);
+    const float* z = requireDepth(*in);
+    const Camera camera = requireCamera(*in, "input 'image'");
+
+    std::string spec = ctx.getString(points_.name());
+    if (spec.empty()) throw Error("no point list given; set 'points' to a CSV (x, y, z[, radius, line, fields]) or mesh file");
+    if (hasRowPlaceholders(spec)) {
+        const Row& row = ctx.get(row_);
+        if (row.empty())
+            throw Error("'points' (" + spec + ") has placeholders but 'row' is empty; connect CinemaReader's row");
+        spec = fillRowPlaceholders(spec, row, "points");
+    }
+    const std::string path = ctx.resolveInputPath(spec);
+    ctx.readsFile(path);
+    const PointList list = readPointList(path);
+    for (const auto& w : list.warnings) ctx.warn(w);
+
+    const ViewGeometry view(camera, in->width(), in->height());
+    const bool perImageHeight = ctx.get(radiusUnits_) == RadiusUnits::ImageHeight;
+    const float radius = float(ctx.get(radius_));
+    // World radius at depth zp: a fraction of the image height there.
+    auto radiusAt = [&](float zp) { return perImageHeight ? radius * view.pixelSizeAt(zp) * float(in->height()) : radius; };
+    // Cells half the radius wide, at the middle depth of the list when the
+    // radius follows depth.
+    const listao::Primitives prims = listao::listPrimitives(list, camera, ctx.get(pointRadius_), ctx.get(radiusScale_));
+    float typicalDepth = 1.0f;
+    if (!prims.centres.empty()) typicalDepth = std::max(1e-6f, prims.centres[prims.centres.size() / 2].z);
+    else if (!prims.segA.empty()) typicalDepth = std::max(1e-6f, prims.segA[prims.segA.size() / 2].z);
+    const listao::PrimitiveGrid grid(prims, 0.5f * radiusAt(typicalDepth));
+    const listao::ListOcclusion occlusion(grid);
+    ctx.progress(0.1);
+
+    const Normals normals = receiverNormals(ctx, *in, camera, z);
+    const bool multiply = ctx.get(existing_) == ExistingAo::Multiply && in->hasChannel("AO");
+    const float* before = multiply ? in->requireFloat("AO") : nullptr;
+    const float intensity = float(ctx.get(intensity_)), power = float(ctx.get(power_));
+    auto out = ctx.derive(in, {"AO"}, Fill::None);
+    float* ao = out->writeFloat("AO");
+    const int w = in->width();
+    ctx.parallelFor(0, in->height(), 1, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                float a = 1.0f;
+                if (isSurface(z[i]) && z[i] > 0) {
+                    const V3f p = view.position(x, y, z[i]);
+                    V3f n = normalize(view.toView(Vec3{normals.at[0][i], normals.at[1][i], normals.at[2][i]}));
+                    if (!normals.captured) occlusion.surfaceNormal(p, 1e-3f * view.pixelSizeAt(z[i]) + 1e-5f * z[i], n);
+                    if (dot(n, view.toCamera(p)) < 0) n = n * -1.0f;
+                    if (std::isfinite(n.x + n.y + n.z)) a = occlusion.visibility(p, n, radiusAt(z[i]));
+                    a = std::pow(std::clamp(1.0f - intensity * (1.0f - a), 0.0f, 1.0f), power);
+                }
+                ao[i] = before ? a * before[i] : a;
+            }
+    });
+    ctx.progress(1.0);
+    ctx.set(result_, out);
+}
+
+}  // namespace darkroom
