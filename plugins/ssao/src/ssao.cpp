@@ -22,8 +22,8 @@ namespace {
 
 // Defaults of LineAO and PointAO (README: how they were chosen).
 constexpr int kLineAoLevels = 3, kPointAoLevels = 3;
-constexpr float kLineAoZone = 0.5f, kPointAoZone = 0.5f;
-constexpr float kLineAoStrength = 2.5f, kPointAoStrength = 2.5f;
+constexpr float kLineAoZone = 0.5f, kPointAoZone = 1.0f;
+constexpr float kLineAoStrength = 5.0f, kPointAoStrength = 5.0f;  // the papers use 1-3 with screen-space radii; 5 halves the corner bias (README)
 
 using RowEstimator = std::function<void(int y, const std::int32_t* xs, int count, float* ao)>;
 

@@ -55,10 +55,9 @@ private:
                   "pointao 3)"};
     FloatIn zone_{"zone", 0.0, 0.0, 100.0,
                   "lineao, pointao: zone of influence of the finest level, in radii (occluders nearer the camera by "
-                  "more count less); 0 = the method's default (lineao 0.5, pointao 0.5)"};
+                  "more count less); 0 = the method's default (lineao 0.5, pointao 1)"};
     FloatIn strength_{"strength", 0.0, 0.0, 100.0,
-                      "lineao, pointao: occlusion scale of the estimator; 0 = the method's default (lineao 2.5, "
-                      "pointao 2.5)"};
+                      "lineao, pointao: occlusion scale of the estimator; 0 = the method's default (lineao 5, pointao 5)"};
     IntIn slices_{"slices", 4, 1, 64, "horizon: slice planes per pixel"};
     IntIn steps_{"steps", 8, 1, 256, "horizon: depth samples per side of each slice"};
     FloatIn falloff_{"falloff", 0.2, 0.0, 1.0,
