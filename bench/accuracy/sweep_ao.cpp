@@ -160,6 +160,18 @@ bool picturedSetting(const SsaoSetting& s) {
            (s.method == "hemisphere" && s.setting == "samples=16");
 }
 
+// AO, reference and 4 x their difference side by side.
+void writeFailurePicture(Harness& harness, int w, int h, const float* ao, const float* refAo, const float* z,
+                         const std::string& name) {
+    auto pic = ao::panel(w, h, 3, [&](int tile, int x, int y, float* rgb) {
+        const std::size_t i = std::size_t(y) * w + x;
+        float v = tile == 0 ? ao[i] : tile == 1 ? refAo[i] : 4.0f * std::fabs(ao[i] - refAo[i]);
+        if (tile == 2 && !std::isfinite(z[i])) v = 0;
+        rgb[0] = rgb[1] = rgb[2] = v;
+    });
+    harness.writePicture(*pic, {"R", "G", "B"}, name);
+}
+
 // Reference AO (cosine) of one scene at `radius`, and its rows; the
 // uniform-weighted one too where asked.
 std::vector<float> referenceAo(Harness& harness, Csv& csv, const stress::StressScene& scene, CaptureBackend& backend,
@@ -304,13 +316,7 @@ void sweepScene(Harness& harness, Csv& csv, const std::string& family, const str
         const std::string key = base.family + "/" + s.method;
         if (picturedSetting(s) && e > kFailRmse && !opt.imageDir.empty() && !pictured.count(key)) {
             pictured.insert(key);
-            auto pic = ao::panel(w, h, 3, [&](int tile, int x, int y, float* rgb) {
-                const std::size_t i = std::size_t(y) * w + x;
-                float v = tile == 0 ? ao[i] : tile == 1 ? refAo[i] : 4.0f * std::fabs(ao[i] - refAo[i]);
-                if (tile == 2 && !std::isfinite(z[i])) v = 0;
-                rgb[0] = rgb[1] = rgb[2] = v;
-            });
-            harness.writePicture(*pic, {"R", "G", "B"}, "ao-" + base.scene + "-" + s.method);
+            writeFailurePicture(harness, w, h, ao.data(), refAo.data(), z, "ao-" + base.scene + "-" + s.method);
         }
         std::cerr << "ao " << base.scene << " " << s.method << " " << s.setting << ": rmse " << e << ", " << ms
                   << " ms/Mpix\n";
