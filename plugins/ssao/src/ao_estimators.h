@@ -23,7 +23,12 @@ struct AoSettings {
     std::uint32_t seed = 0;
     Geometry geometry = Geometry::Surface;
     bool interleave = false;          // stratify the rotation noise over 2 x 2 blocks of even pixels (half resolution)
+    int levels = 3;                   // lineao, pointao: hemisphere radii, one pyramid level each
+    float zone = 0.5f;                // lineao, pointao: zone of influence of level 0, in radii
+    float strength = 1.0f;            // lineao, pointao: occlusion scale
 };
+
+struct Pyramid;
 
 // Both estimators weight an occluder at distance `dist` from the receiver by
 // 1 inside (1 - falloff) * radius, fading linearly to 0 at the radius; a hard
@@ -42,5 +47,11 @@ void horizonAO(const Frame& g, const AoSettings& s, int y0, int y1, float* ao);
 // value the row functions give it.
 void hemisphereAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
 void horizonAOAt(const Frame& g, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
+
+// The pyramid estimators (scalar, per pixel): row y, every pixel when xs is
+// null, else the count pixels xs. LineAO and PointAO read a Reduction::Mean
+// pyramid with at least s.levels levels, SAO a Reduction::RotatedGrid one.
+void lineAO(const Frame& g, const Pyramid& p, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
+void saoAO(const Frame& g, const Pyramid& p, const AoSettings& s, int y, const std::int32_t* xs, int count, float* ao);
 
 }  // namespace darkroom::ssao

@@ -2,13 +2,15 @@
 #include <darkroom/depth_input.h>
 #include <darkroom/filter.h>
 
+#include "ao_estimators.h"
+
 namespace darkroom {
 
 // SSAO: screen-space ambient occlusion from depth and the camera. Adds channel
 // `AO` in [0, 1] (1 = unoccluded) and passes every input channel through.
 class Ssao final : public Filter {
 public:
-    enum class Method { Hemisphere, Horizon };
+    enum class Method { Hemisphere, Horizon, LineAO, PointAO, Sao };
     enum class GeometryKind { Surface, Points };
     enum class RadiusUnits { World, ImageHeight };
     enum class Resolution { Full, Half };
@@ -18,13 +20,22 @@ public:
     void beginSequence(const SequenceInfo& info) override;
 
 private:
+    ssao::AoSettings settings(Context& ctx) const;  // the estimator's parameters from the ports
+
     ImageIn image_{"image", "G-buffer with planar depth Z (+inf = background) and, best, a camera in its metadata (without one it is shaded in image space)", {"Z"}};
     EnumIn<Method> method_{"method",
-                           {{Method::Hemisphere, "hemisphere"}, {Method::Horizon, "horizon"}},
+                           {{Method::Hemisphere, "hemisphere"},
+                            {Method::Horizon, "horizon"},
+                            {Method::LineAO, "lineao"},
+                            {Method::PointAO, "pointao"},
+                            {Method::Sao, "sao"}},
                            Method::Horizon,
                            "hemisphere: classic normal-oriented point sampling with a range check; horizon: "
                            "GTAO-style slices with an analytic cosine-weighted inner integral (comparable to "
-                           "ray-traced AO of the same radius)"};
+                           "ray-traced AO of the same radius); lineao: multi-scale hemispheres over a depth/normal "
+                           "pyramid weighted by depth zone and normal difference (Eichelbaum et al. 2013, for lines); "
+                           "pointao: the same estimator with defaults for particles; sao: Scalable Ambient Obscurance "
+                           "(McGuire et al. 2012), spiral taps over a depth MIP chain, cost independent of the radius"};
     EnumIn<GeometryKind> geometry_{"geometry",
                                    {{GeometryKind::Surface, "surface"}, {GeometryKind::Points, "points"}},
                                    GeometryKind::Surface,
@@ -36,7 +47,17 @@ private:
                                      RadiusUnits::ImageHeight,
                                      "world: world units; imageHeight: a fraction of the image height, converted to "
                                      "world units at each pixel's depth"};
-    IntIn samples_{"samples", 16, 1, 1024, "hemisphere: sample points per pixel"};
+    IntIn samples_{"samples", 16, 1, 1024,
+                   "hemisphere: sample points per pixel; lineao, pointao: points per pyramid level; sao: spiral taps "
+                   "per pixel"};
+    IntIn levels_{"levels", 0, 0, 8,
+                  "lineao, pointao: hemisphere radii, one pyramid level each; 0 = the method's default (lineao 3, "
+                  "pointao 3)"};
+    FloatIn zone_{"zone", 0.0, 0.0, 100.0,
+                  "lineao, pointao: zone of influence of the finest level, in radii (occluders nearer the camera by "
+                  "more count less); 0 = the method's default (lineao 0.5, pointao 1)"};
+    FloatIn strength_{"strength", 0.0, 0.0, 100.0,
+                      "lineao, pointao: occlusion scale of the estimator; 0 = the method's default (lineao 5, pointao 5)"};
     IntIn slices_{"slices", 4, 1, 64, "horizon: slice planes per pixel"};
     IntIn steps_{"steps", 8, 1, 256, "horizon: depth samples per side of each slice"};
     FloatIn falloff_{"falloff", 0.2, 0.0, 1.0,
