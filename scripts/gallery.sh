@@ -24,6 +24,10 @@ if [ ! -d "$root/out/publish/teaser.cdb" ]; then
   mkdir -p "$root/out/publish"
   "$darkroom" capture "$root/docs/examples/publish/teaser-scene.yaml" --output "$root/out/publish/teaser.cdb"
 fi
+# The particle AO figure's scene: tracers kept as a point list over a floor.
+if [ ! -d "$root/out/publish/particles.cdb" ]; then
+  "$darkroom" capture "$root/docs/examples/publish/particles-ao-scene.yaml" --output "$root/out/publish/particles.cdb"
+fi
 status=0
 # The pipelines on other inputs (the shared TTK database, the volume example) live in subfolders.
 for pipeline in "$root"/docs/examples/*.yaml "$root"/docs/examples/ttk/*.yaml "$root"/docs/examples/volume/volume-*.yaml; do
@@ -41,7 +45,7 @@ done
 for pipeline in "$root"/docs/examples/publish/*.yaml; do
   name=$(basename "$pipeline" .yaml)
   case "$name" in
-    teaser-scene) continue ;;
+    teaser-scene|particles-ao-scene) continue ;;
     foreach-*) args=(--foreach read --output "$root/out/publish") ;;
     *) args=(--output "$root/docs/gallery") ;;
   esac
@@ -57,6 +61,12 @@ if [ -d "$root/out/publish/orbit.cdb" ]; then
   for phi in 0 45 90 135 180 225 270 315; do frames+=("$root/out/publish/orbit.cdb/phi=${phi}_theta=40.png"); done
   oiiotool "${frames[@]}" --mosaic 4x2 -o "$root/docs/gallery/publish-orbit.png"
 fi
+# The particle AO figure: SSAO and PointListAO side by side.
+if [ -f "$root/docs/gallery/particles-ssao.png" ] && [ -f "$root/docs/gallery/particles-listao.png" ]; then
+  oiiotool "$root/docs/gallery/particles-ssao.png" "$root/docs/gallery/particles-listao.png" --mosaic 2x1 \
+    -o "$root/docs/gallery/publish-particles-ao.png"
+  rm "$root/docs/gallery/particles-ssao.png" "$root/docs/gallery/particles-listao.png"
+fi
 # Keep the committed pictures small: 512 pixels wide, the orbit's contact
 # sheet 1024, the normals' before and after two halves of 384; the teaser
 # stays at the 2048 x 1024 it is rendered at.
@@ -64,6 +74,7 @@ for png in "$root"/docs/gallery/*.png; do
   case "$(basename "$png")" in
     publish-teaser.png) continue ;;
     publish-orbit.png) width=1024 ;;
+    publish-particles-ao.png) width=1200 ;;  # the difference is per particle
     volume-normals.png) width=768 ;;
     *) width=512 ;;
   esac

@@ -21,6 +21,7 @@ run_all() {
     "$darkroom" -q capture "$ex/demo/$part.yaml" -o "$out/demo/$part.cdb"
   done
   "$darkroom" -q capture "$ex/publish/teaser-scene.yaml" -o "$out/publish/teaser.cdb"
+  "$darkroom" -q capture "$ex/publish/particles-ao-scene.yaml" -o "$out/publish/particles.cdb"
   if [ -n "$blobs" ] && [ -f "$blobs" ]; then
     cp -p "$blobs" "$out/volume/blobs.vtu"  # same time: the marker records it
     "$darkroom" -q capture "$ex/volume/tetrahedra.yaml" -o "$out/volume/tetrahedra.cdb"
@@ -28,7 +29,7 @@ run_all() {
   for pipeline in "$ex"/*.yaml "$ex"/ttk/*.yaml "$ex"/volume/volume-*.yaml "$ex"/publish/*.yaml; do
     name=$(basename "$pipeline" .yaml)
     case "$name" in
-      teaser-scene) continue ;;
+      teaser-scene|particles-ao-scene) continue ;;
       foreach-*) "$darkroom" -q run "$pipeline" --foreach read --output "$out/publish" || echo "FAILED: $name" ;;
       *) "$darkroom" -q run "$pipeline" --output "$out/gallery" || echo "FAILED: $name" ;;
     esac

@@ -33,9 +33,10 @@ private:
                            "hemisphere: classic normal-oriented point sampling with a range check; horizon: "
                            "GTAO-style slices with an analytic cosine-weighted inner integral (comparable to "
                            "ray-traced AO of the same radius); lineao: multi-scale hemispheres over a depth/normal "
-                           "pyramid weighted by depth zone and normal difference (Eichelbaum et al. 2013, for lines); "
-                           "pointao: the same estimator with defaults for particles; sao: Scalable Ambient Obscurance "
-                           "(McGuire et al. 2012), spiral taps over a depth MIP chain, cost independent of the radius"};
+                           "pyramid weighted by depth zone and normal difference (LineAO, Eichelbaum et al. 2012); "
+                           "pointao: the same estimator with defaults for particles (PointAO, Eichelbaum et al. "
+                           "2013); sao: Scalable Ambient Obscurance (McGuire et al. 2012), spiral taps over a depth "
+                           "MIP chain, cost independent of the radius"};
     EnumIn<GeometryKind> geometry_{"geometry",
                                    {{GeometryKind::Surface, "surface"}, {GeometryKind::Points, "points"}},
                                    GeometryKind::Surface,

@@ -44,6 +44,7 @@ struct TracerOptions {
     double radius = 0.006;
     double release = 3.0;       // particles are released over [0, release] and carried until `release`
     double step = 0.02;         // RK4 time step
+    double speed = 1.0;         // multiplies the flow's velocity (a slower flow keeps a plume in the cube longer)
     Vec3 source{0.35, -0.25, 0.1};
     double sourceRadius = 0.15;
     double a = 1.7320508075688772, b = 1.4142135623730951, c = 1.0;

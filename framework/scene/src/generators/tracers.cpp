@@ -25,7 +25,7 @@ bool advect(const TracerOptions& o, std::uint64_t i, double& seedTime, Vec3& p) 
     const double u = 2 * hashUniform(o.seed, i, 1) - 1, phi = 2 * 3.14159265358979 * hashUniform(o.seed, i, 2);
     const double s = std::sqrt(1 - u * u), r = o.sourceRadius * std::cbrt(hashUniform(o.seed, i, 3));
     p = o.source + Vec3{s * std::cos(phi), s * std::sin(phi), u} * r;
-    auto v = [&](const Vec3& q) { return abcVelocity(q, o.a, o.b, o.c); };
+    auto v = [&](const Vec3& q) { return abcVelocity(q, o.a, o.b, o.c) * o.speed; };
     const int steps = int(std::ceil((o.release - seedTime) / o.step - 1e-9));
     const double h = steps > 0 ? (o.release - seedTime) / steps : 0;
     for (int k = 0; k < steps; ++k) {
@@ -44,6 +44,7 @@ TracerOptions readTracerOptions(GeneratorParams& p) {
     o.radius = p.number("radius", o.radius, 0.0, 1.0);
     o.release = p.number("release", o.release, 0.0, 1000.0);
     o.step = p.number("step", o.step, 1e-4, 1.0);
+    o.speed = p.number("speed", o.speed, 1e-3, 100.0);
     o.source = p.vec3("source", o.source);
     o.sourceRadius = p.number("source radius", o.sourceRadius, 0.0, 1.0);
     o.seed = std::uint64_t(p.integer("seed", int(o.seed), 0, 2147483647));
