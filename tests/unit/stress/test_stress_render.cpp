@@ -80,7 +80,8 @@ TEST(StressRender, EveryFamilyCoversItsShareOfTheImage) {
     auto backend = embree();
     if (!backend) GTEST_SKIP() << "no embree capture backend in this build";
     const std::map<std::string, std::pair<double, double>> bounds = {
-        {"grazing", {0.6, 0.8}}, {"border", {0.15, 0.6}}, {"gyroid", {0.35, 0.95}}};
+        {"grazing", {0.6, 0.8}}, {"border", {0.15, 0.6}}, {"gyroid", {0.35, 0.95}},
+        {"shells", {0.4, 0.7}},  {"sheets", {0.5, 0.95}}};
     stress::Options o;
     o.width = 64;
     o.height = 64;

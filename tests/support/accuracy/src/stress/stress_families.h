@@ -23,5 +23,8 @@ void buildStaircase(StressScene& s, double knob, const Options& options);
 // families_objects.cpp
 void buildBorder(StressScene& s, double knob, const Options& options);
 void buildGyroid(StressScene& s, double knob, const Options& options);
+// families_layers.cpp
+void buildShells(StressScene& s, double knob, const Options& options);
+void buildSheets(StressScene& s, double knob, const Options& options);
 
 }  // namespace darkroom::stress::detail

@@ -34,6 +34,8 @@ const std::vector<Family>& table() {
         {"border", "", "", 0, 0, {0}, detail::buildBorder},
         {"gyroid", "", "", 0, 0, {0}, detail::buildGyroid},
         {"stripes", "stripe period (px)", "p", 1, 64, {1.5, 2, 3, 4, 8}, detail::buildStripes},
+        {"shells", "nested shells", "n", 1, 8, {1, 2, 3, 4}, detail::buildShells},
+        {"sheets", "sheets in the stack", "n", 1, 32, {2, 4, 8, 16}, detail::buildSheets},
     };
     return t;
 }

@@ -96,4 +96,17 @@ struct ThinLens {
 DARKROOM_API BufferPtr thinLens(CaptureBackend& backend, const Camera& camera, const CaptureRequest& request,
                                 const SampleShader& shade, const ThinLens& lens, Context& ctx);
 
+// Transparency (issue 30): for each pixel-centre ray, every surface crossing
+// in exact depth order (traced again from just beyond each hit), each shaded
+// by `shadeCrossing` into a straight colour and its opacity (rgba[3]), then
+// composited front to back over the opaque `background`:
+//   C = sum_k a_k c_k prod_{j<k} (1 - a_j) + prod_k (1 - a_k) background.
+// At most `maxCrossings` per ray; a ray stops early once what is behind can
+// no longer show (transmittance below 1e-5). Returns "R", "G", "B", "A" (1)
+// and "crossings" (how many surfaces each ray crossed: the depth complexity
+// up to the stop) with the camera in the metadata.
+DARKROOM_API BufferPtr transparent(CaptureBackend& backend, const Camera& camera, const CaptureRequest& request,
+                                   const SampleShader& shadeCrossing, Color background, int maxCrossings,
+                                   Context& ctx);
+
 }  // namespace darkroom::reference

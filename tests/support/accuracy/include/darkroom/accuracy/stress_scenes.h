@@ -64,7 +64,8 @@ struct StressScene {
 };
 
 // The families, in a stable order: plane, corner, terrain, particles,
-// streamlines, slabs, staircase, grazing, border, gyroid, stripes.
+// streamlines, slabs, staircase, grazing, border, gyroid, stripes, shells,
+// sheets.
 DARKROOM_API std::vector<std::string> families();
 
 // The knob values a family is swept over (e.g. particles: projected radii
