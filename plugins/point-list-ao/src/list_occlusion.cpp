@@ -15,9 +15,18 @@ float ListOcclusion::visibility(V3f p, V3f n, float R) const {
         [&](std::uint32_t b, std::uint32_t e) {
             for (std::uint32_t i = b; i < e; ++i) {
                 const V3f v = s.centres[i] - p;
-                const float reach = R + s.radii[i];
-                if (dot(v, v) >= reach * reach) continue;
-                visible *= 1.0f - sphereOcclusion(p, n, s.centres[i], s.radii[i], R);
+                const float r = s.radii[i], d2 = dot(v, v), reach = R + r;
+                if (d2 >= reach * reach) continue;
+                // n . v against r decides the horizon without a square root:
+                // wholly below (skipped) or wholly above, where a sphere whose
+                // rim is within R covers (r / d)^2 cos(theta) = r^2 (n . v) / d^3.
+                const float nv = dot(n, v);
+                if (nv <= -r) continue;
+                if (nv >= r && d2 - r * r <= R * R && d2 > r * r) {
+                    visible *= 1.0f - r * r * nv / (d2 * std::sqrt(d2));
+                    continue;
+                }
+                visible *= 1.0f - sphereOcclusion(p, n, s.centres[i], r, R);
             }
         },
         [&](std::uint32_t b, std::uint32_t e) {
