@@ -33,7 +33,13 @@ TEST(SsaoLayers, ALayeredBufferGivesTheFrontLayersAO) {
             auto f = test::pluginRegistry().createFilter("SSAO");
             FilterRunOptions o;
             o.threads = 2;
-            return runFilter(*f, {{"image", {Value(image)}}, {"method", {Value(method)}}}, o)
+            return runFilter(*f,
+                             {{"image", {Value(image)}},
+                              {"method", {Value(method)}},
+                              {"radiusUnits", {Value("world")}},
+                              {"radius", {Value(0.5)}},
+                              {"thickness", {Value(0.2)}}},
+                             o)
                 .outputs.at("image")
                 .asImage();
         };
