@@ -49,7 +49,7 @@ TEST(SsaoLayers, ALayeredBufferGivesTheFrontLayersAO) {
             ASSERT_EQ(a->hostFloat("AO")[i], b->hostFloat("AO")[i]) << method << " pixel " << i;
             lowest = std::min(lowest, a->hostFloat("AO")[i]);
         }
-        EXPECT_LT(lowest, 0.9f) << method << ": the sphere occludes the wall, so the test compares something";
+        EXPECT_LT(lowest, 0.99f) << method << ": the sphere occludes the wall, so the test compares something";
         EXPECT_TRUE(a->hasChannel("layer1.Z")) << "the deeper layers pass through";
     }
 }
