@@ -160,7 +160,7 @@ void runPassWithImages(benchmark::State& state, const std::string& type, int siz
     auto filter = registry().createFilter(type);
     std::map<std::string, std::vector<Value>> inputs;
     for (const auto& [port, buffers] : images)
-        for (const auto& b : buffers) inputs[port].push_back(Value(b));
+        for (const auto& b : buffers) inputs[port].emplace_back(b);  // in place: push_back(Value(b)) trips GCC 12's maybe-uninitialized
     for (const auto& [k, v] : parameters) inputs[k] = {v};
     timePass(state, *filter, inputs, size, channelsRead);
 }

@@ -2,10 +2,13 @@
 
 #include "database_range.h"
 #include "map_kernel.h"
+#include "map_layers.h"
+#include "object_opacity.h"
 #include "scalar_range.h"
 
 #include <darkroom/colormap.h>
 #include <darkroom/error.h>
+#include <darkroom/layers.h>
 
 #include <algorithm>
 #include <utility>
@@ -123,14 +126,18 @@ namespace {
 
 // The clip-th and (100 - clip)-th percentiles of the finite values over
 // non-background pixels (positive ones on a log scale).
-ScalarRange percentileRange(const ScalarChannel& s, const float* depth, std::size_t n, double clip, bool positiveOnly) {
+// Over every layer's values that count.
+ScalarRange percentileRange(const std::vector<colormapping::LayerValues>& layers, std::size_t n, double clip,
+                            bool positiveOnly) {
     std::vector<double> v;
     v.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (depth && std::isinf(depth[i]) && depth[i] > 0) continue;
-        const double x = s[i];
-        if (std::isfinite(x) && (!positiveOnly || x > 0)) v.push_back(x);
-    }
+    for (const colormapping::LayerValues& layer : layers)
+        for (std::size_t i = 0; i < n; ++i) {
+            const float* depth = layer.depth;
+            if (depth && std::isinf(depth[i]) && depth[i] > 0) continue;
+            const double x = layer.scalar[i];
+            if (std::isfinite(x) && (!positiveOnly || x > 0)) v.push_back(x);
+        }
     ScalarRange r;
     if (v.empty()) return r;
     const auto at = [&v](double q) {
@@ -156,7 +163,8 @@ bool collapseRounding(double& low, double& high) {
 
 }  // namespace
 
-ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& in, const std::string& channel) const {
+ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& in, const std::string& channel,
+                                                    const std::vector<colormapping::LayerValues>& values) const {
     const bool logScale = ctx.get(scale_) == Scale::Log;
     const Range mode = ctx.get(range_);
     if (mode == Range::Manual) {
@@ -180,10 +188,17 @@ ColorMapping::ChosenRange ColorMapping::chooseRange(Context& ctx, const Buffer& 
         r.found = d.found, r.low = d.low, r.high = d.high;
         // A database written again (a new capture) changes the range.
         ctx.readsFile((std::filesystem::path(d.database) / "data.csv").string());
+    } else if (clip > 0) {
+        r = percentileRange(values, in.pixelCount(), clip, logScale);
     } else {
-        const ScalarChannel scalar{in.hostFloat(channel), in.hostUInt(channel)};
-        r = clip > 0 ? percentileRange(scalar, in.hostFloat("Z"), in.pixelCount(), clip, logScale)
-                     : finiteRange(ctx, scalar, in.hostFloat("Z"), in.width(), in.height(), logScale);
+        // min and max merge in any order: the layers' ranges give the whole one.
+        for (const colormapping::LayerValues& layer : values) {
+            const ScalarRange l = finiteRange(ctx, layer.scalar, layer.depth, in.width(), in.height(), logScale);
+            if (!l.found) continue;
+            r.low = r.found ? std::min(r.low, l.low) : l.low;
+            r.high = r.found ? std::max(r.high, l.high) : l.high;
+            r.found = true;
+        }
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (!r.found) return {nan, nan, false};
@@ -207,49 +222,10 @@ std::string ColorMapping::chooseColorMap(Context& ctx, const Buffer& in, const s
     return stored->second;
 }
 
-void ColorMapping::execute(Context& ctx) {
-    const BufferPtr in = ctx.get(image_);
-    const std::string channel = chooseChannel(*in, ctx.get(channel_));
-    ScalarChannel scalar{in->hostFloat(channel), in->hostUInt(channel)};
-    const float* depth = in->hostFloat("Z");
-    const int w = in->width(), h = in->height();
+namespace colormapping {
 
-    const std::string colormap = chooseColorMap(ctx, *in, channel);
-    const std::shared_ptr<const Lookup> lookup = lookupFor(colormap);
-    const ColorMapData& map = lookup->map;
-    const std::vector<Color>& table = lookup->table;
-    // Without depth, NaN is how ParaView's float images (and TTK's) mark the
-    // background: transparent, as background with depth is.
-    const Color nan = !depth ? Color{0.0f, 0.0f, 0.0f, 0.0f}
-                             : (ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_));
-    const float alpha = float(ctx.get(opacity_));
-
-    const bool logScale = ctx.get(scale_) == Scale::Log;
-    const ChosenRange range = chooseRange(ctx, *in, channel);
-    const double low = range.low, high = range.high;
-    // A constant field maps to the middle of the map: mapped over a range
-    // wide beside its last bits, every value lands there.
-    const double spread = range.constant ? std::max(1.0, std::fabs(low)) : 0.0;
-    const double mapLow = logScale ? low / (1 + spread) : low - spread;
-    const double mapHigh = logScale ? high * (1 + spread) : high + spread;
-
-    // Colour is written for every pixel; depth is the input's plane, shared.
-    auto out = ctx.allocate(w, h, {"R", "G", "B", "A"}, Fill::None);
-    if (depth) out->setPlane({"Z"}, in->plane("Z"));
-    out->metadata() = in->metadata();
-    colormapping::MapJob job;
-    job.depth = depth;
-    job.table = table.data();
-    for (int c = 0; c < 3; ++c) job.pairs[c] = lookup->pairs.data() + std::size_t(c) * (kTableSize - 1);
-    job.nan = nan;
-    job.alpha = alpha;
-    job.haveRange = !std::isnan(low);
-    job.low = mapLow;
-    job.high = mapHigh;
-    job.out[0] = out->writeFloat("R");
-    job.out[1] = out->writeFloat("G");
-    job.out[2] = out->writeFloat("B");
-    job.out[3] = out->writeFloat("A");
+void mapPixels(Context& ctx, const MapJob& job, const ScalarChannel& scalar, int w, int h, bool logScale) {
+    const float* depth = job.depth;
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
         if (logScale) {
             // Log scale: per value (the SIMD span below is linear).
@@ -263,15 +239,15 @@ void ColorMapping::execute(Context& ctx) {
                     if (background) {
                         // keep transparent
                     } else if (std::isnan(v) || !job.haveRange) {
-                        c = nan;
+                        c = job.nan;
                     } else {
-                        const double f = colormapping::logPosition(v, mapLow, mapHigh) * (kTableSize - 1);
+                        const double f = logPosition(v, job.low, job.high) * (kTableSize - 1);
                         const int k = std::min(int(f), kTableSize - 2);
                         const float t = float(f - k), s = 1.0f - t;
                         // This form returns either entry exactly at t = 0 and t = 1.
-                        const Color& a = table[std::size_t(k)];
-                        const Color& b = table[std::size_t(k) + 1];
-                        c = {s * a.r + t * b.r, s * a.g + t * b.g, s * a.b + t * b.b, alpha};
+                        const Color& a = job.table[std::size_t(k)];
+                        const Color& b = job.table[std::size_t(k) + 1];
+                        c = {s * a.r + t * b.r, s * a.g + t * b.g, s * a.b + t * b.b, job.alpha};
                     }
                     job.out[0][i] = c.r;
                     job.out[1][i] = c.g;
@@ -281,17 +257,85 @@ void ColorMapping::execute(Context& ctx) {
             return;
         }
         const std::size_t begin = std::size_t(y0) * std::size_t(w), end = std::size_t(y1) * std::size_t(w);
-        std::size_t i = scalar.f ? colormapping::mapSpan(job, scalar.f, begin, end) : begin;
+        std::size_t i = scalar.f ? mapSpan(job, scalar.f, begin, end) : begin;
         for (; i < end; ++i) {
-            const Color c = colormapping::mapValue(job, i, scalar[i]);
+            const Color c = mapValue(job, i, scalar[i]);
             job.out[0][i] = c.r;
             job.out[1][i] = c.g;
             job.out[2][i] = c.b;
             job.out[3][i] = c.a;
         }
     });
+}
+
+}  // namespace colormapping
+
+void ColorMapping::execute(Context& ctx) {
+    const BufferPtr in = ctx.get(image_);
+    const std::string channel = chooseChannel(*in, ctx.get(channel_));
+    ScalarChannel scalar{in->hostFloat(channel), in->hostUInt(channel)};
+    const float* depth = in->hostFloat("Z");
+    const int w = in->width(), h = in->height();
+    const int layerCount = depth ? layers::count(*in) : 1;
+    const colormapping::ObjectOpacity objects = colormapping::ObjectOpacity::parse(ctx.get(objectOpacity_));
+
+    const std::string colormap = chooseColorMap(ctx, *in, channel);
+    const std::shared_ptr<const Lookup> lookup = lookupFor(colormap);
+    const ColorMapData& map = lookup->map;
+    // Without depth, NaN is how ParaView's float images (and TTK's) mark the
+    // background: transparent, as background with depth is.
+    const Color nan = !depth ? Color{0.0f, 0.0f, 0.0f, 0.0f}
+                             : (ctx.get(useMapNanColor_) && map.hasNanColor ? map.nanColor : ctx.get(nanColor_));
+    const float alpha = float(ctx.get(opacity_));
+
+    // The automatic range spans the values that can be seen: of one layer,
+    // all of it; of several, each layer where nothing opaque is in front.
+    std::vector<colormapping::LayerValues> values{{scalar, depth}};
+    std::vector<std::vector<float>> visible;
+    if (layerCount > 1) {
+        visible = colormapping::visibleDepths(*in, layerCount, alpha, objects);
+        values.clear();
+        for (int k = 0; k < layerCount; ++k) {
+            const std::string name = layers::channel(channel, k);
+            values.push_back({{in->hostFloat(name), in->hostUInt(name)}, visible[std::size_t(k)].data()});
+            if (!values.back().scalar.f && !values.back().scalar.u)
+                throw Error("layer " + std::to_string(k) + " of the image has no channel '" + name +
+                            "'; every layer needs the mapped channel");
+        }
+    }
+    const bool logScale = ctx.get(scale_) == Scale::Log;
+    const ChosenRange range = chooseRange(ctx, *in, channel, values);
+    visible.clear();
+    const double low = range.low, high = range.high;
+    // A constant field maps to the middle of the map: mapped over a range
+    // wide beside its last bits, every value lands there.
+    const double spread = range.constant ? std::max(1.0, std::fabs(low)) : 0.0;
+
+    colormapping::MapJob job;
+    job.table = lookup->table.data();
+    for (int c = 0; c < 3; ++c) job.pairs[c] = lookup->pairs.data() + std::size_t(c) * (kTableSize - 1);
+    job.nan = nan;
+    job.alpha = alpha;
+    job.haveRange = !std::isnan(low);
+    job.low = logScale ? low / (1 + spread) : low - spread;
+    job.high = logScale ? high * (1 + spread) : high + spread;
+    if (layerCount > 1) {
+        ctx.set(result_, colormapping::mapLayers(ctx, in, channel, job, logScale, objects,
+                                                 ctx.get(layers_) == Layers::Keep));
+    } else {
+        // Colour is written for every pixel; depth is the input's plane, shared.
+        auto out = ctx.allocate(w, h, {"R", "G", "B", "A"}, Fill::None);
+        if (depth) out->setPlane({"Z"}, in->plane("Z"));
+        out->metadata() = in->metadata();
+        job.depth = depth;
+        for (int c = 0; c < 4; ++c) job.out[c] = out->writeFloat(std::string(1, "RGBA"[c]));
+        colormapping::mapPixels(ctx, job, scalar, w, h, logScale);
+        if (!objects.empty())
+            colormapping::applyObjectOpacity(ctx, objects, colormapping::objectIds(*in, 0), depth, job.out[3],
+                                             in->pixelCount());
+        ctx.set(result_, out);
+    }
     ctx.progress(1.0);
-    ctx.set(result_, out);
     ctx.set(usedMinimum_, low);
     ctx.set(usedMaximum_, high);
     ctx.set(usedScale_, Value(logScale ? "log" : "linear"));

@@ -1,7 +1,13 @@
 #pragma once
 #include <darkroom/filter.h>
 
+#include <vector>
+
 namespace darkroom {
+
+namespace colormapping {
+struct LayerValues;
+}
 
 // Scalar channel -> linear RGBA through a colour map (the paper's
 // ColorMapping pass). Depth Z passes through; background (Z = +inf, or NaN
@@ -10,11 +16,12 @@ class ColorMapping final : public Filter {
 public:
     enum class Range { Automatic, Manual, Database };
     enum class Scale { Linear, Log };
+    enum class Layers { Composite, Keep };
 
     PortList ports() const override {
         return {image_,    channel_,        colormap_, range_,  minimum_,     maximum_,     symmetric_, clip_, scale_,
-                nanColor_, useMapNanColor_, opacity_,  result_, usedMinimum_, usedMaximum_, usedScale_,
-                usedColormap_};
+                nanColor_, useMapNanColor_, opacity_,  objectOpacity_, layers_, result_, usedMinimum_,
+                usedMaximum_, usedScale_, usedColormap_};
     }
     void execute(Context& ctx) override;
 
@@ -26,7 +33,10 @@ private:
         double low, high;
         bool constant = false;
     };
-    ChosenRange chooseRange(Context& ctx, const Buffer& in, const std::string& channel) const;
+    // `values`: per layer, the scalar and the depth marking where it counts
+    // for an automatic range (one entry for an image of one layer).
+    ChosenRange chooseRange(Context& ctx, const Buffer& in, const std::string& channel,
+                            const std::vector<colormapping::LayerValues>& values) const;
     // The colour map asked for, else the one stored for the channel, else viridis.
     std::string chooseColorMap(Context& ctx, const Buffer& in, const std::string& channel) const;
 
@@ -68,10 +78,22 @@ private:
     BoolIn useMapNanColor_{"useMapNanColor", false,
                            "Use the colour map's own NaN colour when it defines one (ParaView JSON NanColor, "
                            "cool-to-warm, blackbody) instead of nanColor"};
-    FloatIn opacity_{"opacity", 1.0, 0.0, 1.0, "Alpha of mapped pixels (NaN pixels take nanColor's alpha)"};
+    FloatIn opacity_{"opacity", 1.0, 0.0, 1.0,
+                     "Alpha of mapped pixels (NaN pixels take nanColor's alpha); below 1 on a layered image, the "
+                     "layers behind show through"};
+    StringIn objectOpacity_{"objectOpacity", "",
+                            "Opacity per object, 'id: opacity' pairs such as \"0: 0.3, 2: 1\" (objects not listed: "
+                            "1), multiplying opacity; needs the objectId channel"};
+    EnumIn<Layers> layers_{"layers",
+                           {{Layers::Composite, "composite"}, {Layers::Keep, "keep"}},
+                           Layers::Composite,
+                           "For a layered image: composite: blend the layers front to back into one image; keep: "
+                           "output every layer's colour (R, G, B, A, Z, then layer1.R ...) so that Compositing can "
+                           "merge layers of several databases by depth"};
     ImageOut result_{"image",
                      "Linear R, G, B, A (straight alpha) plus the input's Z; pixels whose Z is +inf are "
-                     "transparent black",
+                     "transparent black; of a layered image, the layers' front-to-back blend (Z: the nearest "
+                     "surface that shows), or every layer with layers: keep",
                      {"R", "G", "B", "A"}};
     ValueOut usedMinimum_{"usedMinimum", PortType::Float, "Value mapped to the start of the map (NaN if none)"};
     ValueOut usedMaximum_{"usedMaximum", PortType::Float, "Value mapped to the end of the map (NaN if none)"};

@@ -1,6 +1,7 @@
 #pragma once
 // The output channel list of a composite: every channel of every input, by
-// name, in order of first appearance.
+// name, in order of first appearance; of a layered input (layers.h) only
+// its front layer's channels (the composite is one layer).
 #include <darkroom/buffer.h>
 
 #include <string>

@@ -1,10 +1,12 @@
 #include "compositing.h"
 
 #include "channel_union.h"
+#include "colour_blend.h"
 #include "nearest_input.h"
 
 #include <darkroom/error.h>
 #include <darkroom/channel_text.h>
+#include <darkroom/layers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,20 +53,9 @@ struct ChannelSources {
     bool isDepth = false;
 };
 
-}  // namespace
-
-void Compositing::execute(Context& ctx) {
-    const std::vector<BufferPtr> inputs = ctx.get(images_);
-    if (inputs.empty()) throw Error("no input connected to 'images'; connect at least one G-buffer");
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-        if (!inputs[i]) throw Error("input " + std::to_string(i) + " on 'images' holds no image");
-    // One input has nothing to merge with: forward it untouched.
-    if (inputs.size() == 1) {
-        ctx.set(result_, inputs[0]);
-        return;
-    }
-
-    const std::string& depthName = ctx.get(depthChannel_);
+// Each input's depth plane; throws on a size mismatch or a missing depth.
+std::vector<const float*> inputDepths(Context& ctx, const std::vector<BufferPtr>& inputs,
+                                      const std::string& depthName) {
     const Buffer& first = *inputs[0];
     std::vector<const float*> depth(inputs.size());
     for (std::size_t i = 0; i < inputs.size(); ++i) {
@@ -80,6 +71,27 @@ void Compositing::execute(Context& ctx) {
             ctx.warn("input " + std::to_string(i) +
                      " was rendered with another camera than input 0; the output keeps input 0's camera");
     }
+    return depth;
+}
+
+}  // namespace
+
+void Compositing::execute(Context& ctx) {
+    const std::vector<BufferPtr> inputs = ctx.get(images_);
+    if (inputs.empty()) throw Error("no input connected to 'images'; connect at least one G-buffer");
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (!inputs[i]) throw Error("input " + std::to_string(i) + " on 'images' holds no image");
+    // One input has nothing to merge with: forward it untouched, unless its
+    // layers are to be flattened.
+    if (inputs.size() == 1 && layers::count(*inputs[0]) == 1) {
+        ctx.set(result_, inputs[0]);
+        return;
+    }
+
+    const std::string& depthName = ctx.get(depthChannel_);
+    const Buffer& first = *inputs[0];
+    const std::vector<const float*> depth = inputDepths(ctx, inputs, depthName);
+    const compositing::ColourLayers colour(inputs, depthName);
 
     const std::vector<ChannelDesc> channels = channelUnion(inputs);
     const int w = first.width(), h = first.height();
@@ -110,6 +122,11 @@ void Compositing::execute(Context& ctx) {
     // Row by row: choose the winners of a row, then copy each channel of it
     // run by run (neighbouring pixels mostly come from the same input), so
     // the depths and the winner list stay in cache and the copies are memcpys.
+    float* const colourOut[4] = {out->hostFloat("R") ? out->writeFloat("R") : nullptr,
+                                 out->hostFloat("G") ? out->writeFloat("G") : nullptr,
+                                 out->hostFloat("B") ? out->writeFloat("B") : nullptr,
+                                 out->hostFloat("A") ? out->writeFloat("A") : nullptr};
+    const bool blend = colour.any() && colourOut[0] && colourOut[1] && colourOut[2] && colourOut[3];
     ctx.parallelFor(0, h, 4, [&](int y0, int y1) {
         std::vector<int> winner(static_cast<std::size_t>(w));
         std::vector<std::pair<int, int>> runs;  // (first pixel, winner)
@@ -142,6 +159,7 @@ void Compositing::execute(Context& ctx) {
                     }
                 }
             }
+            if (blend) colour.blendRow(row, w, winner.data(), colourOut);
         }
     });
     ctx.progress(1.0);
