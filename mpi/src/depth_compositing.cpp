@@ -2,6 +2,7 @@
 // that are not powers of two) and an MPI_Reduce baseline. See
 // depth_compositing.h for the rule and docs/scale-out.md for the costs.
 #include <darkroom/error.h>
+#include <darkroom/layers.h>
 #include <darkroom/mpi/depth_compositing.h>
 
 #include <algorithm>
@@ -63,6 +64,15 @@ void checkLayouts(const Communicator& comm, const GBufferImage& image) {
         if (all[std::size_t(r)] != all[0])
             throw Error("depth compositing: rank " + std::to_string(r) + " holds a G-buffer " + all[std::size_t(r)] +
                         " but rank 0 holds " + all[0] + "; every rank must render the same channels at the same size");
+    // Compositing keeps each pixel's nearest record whole; the crossings
+    // behind it (layer1.Z, ...) would have to be merged across ranks by
+    // depth instead, which is not done yet. Every rank holds the same layout
+    // (checked above), so every rank refuses alike.
+    if (image.channelIndex(layers::channel("Z", 1)) >= 0)
+        throw Error("depth compositing: the G-buffer " + all[0] + " holds several surface crossings per pixel "
+                    "(channels: {layers: K > 1}), which compositing across ranks does not merge yet; capture "
+                    "with layers: 1, or in one process (a time series can share whole steps among the ranks: "
+                    "series: {ranks: steps})");
     const int z = image.channelIndex("Z");
     if (z < 0 || image.channels[std::size_t(z)].type != ChannelType::Float32)
         throw Error("depth compositing: the G-buffer " + all[0] + " has no float channel 'Z' to compare depths by");

@@ -119,6 +119,16 @@ TEST(CaptureOverRanks, PointListsAreWrittenAsOneProcessWritesThem) {
     expectSameCapture(3, yaml, 2 + 4 * (1 + 6));
 }
 
+// Layered captures (channels: {layers: K}) are not composited over ranks
+// yet: refused with a message that says what to do, not written wrong.
+TEST(CaptureOverRanks, ALayeredCaptureIsRefusedWithAWayOut) {
+    Scene s(std::string(kScene) + "  layers: 2\n");
+    const auto r = runOnRanks(2, {"capture", s.path, "-o", s.dir.file("db.cdb"), "-q"});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("several surface crossings per pixel"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("layers: 1"), std::string::npos) << r.err;
+}
+
 TEST(CaptureOverRanks, AResumedCaptureRendersOnlyWhatIsMissing) {
     Scene s;
     const std::string db = s.dir.file("db.cdb");

@@ -436,8 +436,8 @@ private:
                 if (std::find(available.begin(), available.end(), f.name) == available.end()) available.push_back(f.name);
         req.scalars = available;
         if (!n) return req;
-        if (!n.IsMap()) fail(n, "'channels' must be a map (scalars, normals, featureAngle, objectId, primitiveId)");
-        checkKeys(n, {"scalars", "normals", "featureAngle", "objectId", "primitiveId"}, "channels");
+        if (!n.IsMap()) fail(n, "'channels' must be a map (scalars, normals, featureAngle, objectId, primitiveId, layers)");
+        checkKeys(n, {"scalars", "normals", "featureAngle", "objectId", "primitiveId", "layers"}, "channels");
         if (const YAML::Node s = n["scalars"]) {
             req.scalars = names(s, "scalars");
             for (std::size_t i = 0; i < req.scalars.size(); ++i)
@@ -451,6 +451,8 @@ private:
         req.normals = normalsOn;
         if (n["objectId"]) req.objectId = boolean(n["objectId"], "objectId");
         if (n["primitiveId"]) req.primitiveId = boolean(n["primitiveId"], "primitiveId");
+        // The K nearest surface crossings per pixel (darkroom/layers.h).
+        if (n["layers"]) req.layers = integer(n["layers"], "layers (surface crossings per pixel)", 1, CaptureRequest::kMaxLayers);
         return req;
     }
 

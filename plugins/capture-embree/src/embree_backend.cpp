@@ -3,6 +3,7 @@
 #include "embree_scene.h"
 #include "flush_denormals.h"
 #include "gbuffer_writer.h"
+#include "layered_tile.h"
 #include "nearest_hit_rule.h"
 #include "packet_rows.h"
 #include "primary_rays.h"
@@ -42,7 +43,7 @@ public:
     }
 
     static BufferPtr renderTiles(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
-                                 Context& ctx) {
+                                 Context& ctx, LayerMethod method) {
         if (camera.width <= 0 || camera.height <= 0)
             throw Error("embree capture: the camera's resolution is " + std::to_string(camera.width) + "x" +
                         std::to_string(camera.height) + "; expected a positive width and height");
@@ -53,12 +54,15 @@ public:
         auto buffer = ctx.allocate(camera.width, camera.height, GBufferWriter::channels(request), Fill::None);
         buffer->metadata().camera = camera;
         buffer->metadata().attributes["units.Z"] = "world";
-        const GBufferWriter writer(bvh.objects(), request, *buffer);
         const PrimaryRays rays(camera);
-
         const int tilesX = (camera.width + kTile - 1) / kTile;
         const int tilesY = (camera.height + kTile - 1) / kTile;
         RTCScene scene = bvh.handle();
+        if (request.layers > 1) {
+            renderLayers(scene, bvh, camera, request, rays, method, *buffer, ctx);
+            return buffer;
+        }
+        const GBufferWriter writer(bvh.objects(), request, *buffer);
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
             NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
@@ -75,8 +79,33 @@ public:
         return buffer;
     }
 
+    // Layered G-buffers (request.layers > 1): the tiles as renderTiles splits
+    // them, each pixel's K nearest crossings written by one writer per layer.
+    static void renderLayers(RTCScene scene, const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
+                             const PrimaryRays& rays, LayerMethod method, WritableBuffer& buffer, Context& ctx) {
+        std::vector<GBufferWriter> writers;
+        for (int k = 0; k < request.layers; ++k) writers.emplace_back(bvh.objects(), request, buffer, k);
+        const int tilesX = (camera.width + kTile - 1) / kTile;
+        const int tilesY = (camera.height + kTile - 1) / kTile;
+        ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
+            const FlushDenormals ftz;
+            LayeredTileState state(writers);
+            for (int tile = begin; tile < end; ++tile) {
+                if (ctx.cancelled()) break;
+                traceLayeredTile(scene, method, rays, writers, state, camera.width, camera.height,
+                                 (tile % tilesX) * kTile, (tile / tilesX) * kTile);
+            }
+            finishRows();
+        });
+        if (ctx.cancelled()) throw Cancelled();
+        ctx.progress(1.0);
+    }
+
     BufferPtr trace(const RayBatch& rays, const CaptureRequest& request, Context& ctx) override {
         if (!bvh_) throw Error("embree capture: trace() called before setScene()");
+        if (request.layers != 1)
+            throw Error("embree capture: trace() answers the nearest hit of each ray; layers = " +
+                        std::to_string(request.layers) + " is for render()");
         const std::size_t n = checkBatch(rays, "trace");
         auto buffer = ctx.allocate(int(n), 1, GBufferWriter::channels(request));
         buffer->metadata().attributes["units.Z"] = "ray parameter";
@@ -269,8 +298,9 @@ private:
 
 std::unique_ptr<CaptureBackend> createBackend() { return std::make_unique<EmbreeBackend>(); }
 
-BufferPtr renderGBuffer(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request, Context& ctx) {
-    return EmbreeBackend::renderTiles(bvh, camera, request, ctx);
+BufferPtr renderGBuffer(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request, Context& ctx,
+                        LayerMethod method) {
+    return EmbreeBackend::renderTiles(bvh, camera, request, ctx, method);
 }
 
 }  // namespace darkroom::embree

@@ -3,6 +3,7 @@
 #include "packet_rows.h"
 
 #include <darkroom/error.h>
+#include <darkroom/layers.h>
 
 #include <algorithm>
 #include <set>
@@ -19,6 +20,9 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
             throw Error("capture: scalar field '" + s +
                         "' clashes with a G-buffer channel of the same name (Z, N.x, N.y, N.z, objectId, "
                         "primitiveId); rename the field");
+        if (request.layers > 1 && layers::parse(s).first != 0)
+            throw Error("capture: scalar field '" + s + "' has the name of a channel of layer " +
+                        std::to_string(layers::parse(s).first) + " (darkroom/layers.h); rename the field");
         if (!seen.insert(s).second) throw Error("capture: scalar field '" + s + "' is requested twice");
         out.push_back({s, ChannelType::Float32});
     }
@@ -29,23 +33,31 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
     }
     if (request.objectId) out.push_back({"objectId", ChannelType::UInt32});
     if (request.primitiveId) out.push_back({"primitiveId", ChannelType::UInt32});
+    if (request.layers < 1 || request.layers > CaptureRequest::kMaxLayers)
+        throw Error("capture: " + std::to_string(request.layers) + " layers requested; expected 1 to " +
+                    std::to_string(CaptureRequest::kMaxLayers) + " surface crossings per pixel");
+    // Layer k >= 1 repeats layer 0's channels under darkroom/layers.h's names.
+    const std::size_t front = out.size();
+    for (int k = 1; k < request.layers; ++k)
+        for (std::size_t c = 0; c < front; ++c) out.push_back({layers::channel(out[c].name, k), out[c].type});
     return out;
 }
 
 GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request,
-                             WritableBuffer& buffer) {
+                             WritableBuffer& buffer, int layer) {
+    auto name = [layer](const std::string& n) { return layers::channel(n, layer); };
     for (const auto& o : objects) {
         objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell,
                             {o.normals[0], o.normals[1], o.normals[2]}});
         hasPoints_ = hasPoints_ || o.representation == Representation::Points;
         hasSmooth_ = hasSmooth_ || (request.normals && o.normals[0]);
     }
-    z_ = buffer.writeFloat("Z");
-    for (const auto& name : request.scalars) {
-        scalars_.push_back(buffer.writeFloat(name));
+    z_ = buffer.writeFloat(name("Z"));
+    for (const auto& scalar : request.scalars) {
+        scalars_.push_back(buffer.writeFloat(name(scalar)));
         for (const auto& o : objects) {
             FieldRef ref;
-            if (const FieldView* f = o.field(name)) {
+            if (const FieldView* f = o.field(scalar)) {
                 ref.values = f->values;
                 ref.cell = f->cell;
             }
@@ -53,12 +65,12 @@ GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const Captu
         }
     }
     if (request.normals) {
-        n_[0] = buffer.writeFloat("N.x");
-        n_[1] = buffer.writeFloat("N.y");
-        n_[2] = buffer.writeFloat("N.z");
+        n_[0] = buffer.writeFloat(name("N.x"));
+        n_[1] = buffer.writeFloat(name("N.y"));
+        n_[2] = buffer.writeFloat(name("N.z"));
     }
-    if (request.objectId) objectId_ = buffer.writeUInt("objectId");
-    if (request.primitiveId) primitiveId_ = buffer.writeUInt("primitiveId");
+    if (request.objectId) objectId_ = buffer.writeUInt(name("objectId"));
+    if (request.primitiveId) primitiveId_ = buffer.writeUInt(name("primitiveId"));
 }
 
 void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& tile) const {

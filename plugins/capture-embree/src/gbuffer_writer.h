@@ -67,12 +67,15 @@ public:
     static constexpr std::uint32_t kNoId = 0xFFFFFFFFu;
 
     // The channels a request produces, in order: Z, the scalars, N.x/N.y/N.z,
-    // objectId, primitiveId. Throws darkroom::Error on a duplicate or reserved
-    // scalar name.
+    // objectId, primitiveId; then the same for each further layer under
+    // darkroom/layers.h's names (layer1.Z, ...). Throws darkroom::Error on a
+    // duplicate or reserved scalar name or a layer count out of range.
     static std::vector<ChannelDesc> channels(const CaptureRequest& request);
 
-    // `buffer` must have been allocated with channels(request).
-    GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request, WritableBuffer& buffer);
+    // `buffer` must have been allocated with channels(request); the writer
+    // fills layer `layer`'s channels.
+    GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request, WritableBuffer& buffer,
+                  int layer = 0);
 
     static constexpr unsigned kMissID = 0xFFFFFFFFu;  // RTC_INVALID_GEOMETRY_ID
 

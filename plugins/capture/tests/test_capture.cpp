@@ -130,6 +130,18 @@ TEST(Capture, OverridesResolutionAndChannels) {
     EXPECT_EQ(b->requireUInt("objectId")[3 * 10 + 5], 0u);
 }
 
+// The scene file's `channels: {layers: K}` passes through the node: the
+// square (one crossing) fills layer 0 and leaves layer 1 empty.
+TEST(Capture, PassesTheSceneFilesLayersThrough) {
+    SceneFiles files;
+    writeText(files.scene, readText(files.scene) + "  layers: 2\n");
+    auto f = makeCapture();
+    const auto b = run(*f, {{"scene", {Value(files.scene)}}});
+    EXPECT_NEAR(centre(b, "Z"), 5.0f, 1e-5f);
+    EXPECT_EQ(centre(b, "layer1.Z"), std::numeric_limits<float>::infinity());
+    EXPECT_TRUE(std::isnan(centre(b, "layer1.N.z")));
+}
+
 // The `normals` input on a scene file that stores none: the normals come in
 // the file's style, smooth unless it says geometric, so within one triangle
 // smooth normals vary and geometric ones do not. The node reloads the scene

@@ -21,6 +21,9 @@ struct CaptureRequest {
                                        // normals interpolated where it carries them, else geometric)
     bool objectId = false;             // "objectId" (uint32, index into Scene::objects; ~0u background)
     bool primitiveId = false;          // "primitiveId" (uint32)
+    int layers = 1;                    // surface crossings kept per pixel, 1 to kMaxLayers: the K nearest,
+                                       // front to back, named as darkroom/layers.h says (layer1.Z, ...)
+    static constexpr int kMaxLayers = 16;
 };
 
 // Rays in world space for CaptureBackend::trace and ::occluded. Directions

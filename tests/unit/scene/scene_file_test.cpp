@@ -148,6 +148,19 @@ TEST(SceneFile, CameraListAndChannels) {
     EXPECT_EQ(d.backend, "embree");
 }
 
+// channels: {layers: K}, the K nearest surface crossings per pixel
+// (darkroom/layers.h): 1 unless asked, 1 to 16, an error naming the line.
+TEST(SceneFile, LayersChannel) {
+    test::TempDir dir;
+    const std::string f = dir.file("scene.yaml");
+    EXPECT_EQ(parseIn(dir, "objects: [{file: square.vtk}]\n").request.layers, 1);
+    EXPECT_EQ(parseIn(dir, "objects: [{file: square.vtk}]\nchannels: {layers: 4}\n").request.layers, 4);
+    EXPECT_EQ(parseIn(dir, "objects: [{file: square.vtk}]\nchannels: {layers: 16}\n").request.layers, 16);
+    for (const char* bad : {"0", "17", "two", "2.5"})
+        expectError([&] { parseIn(dir, std::string("objects: [{file: square.vtk}]\nchannels:\n  layers: ") + bad + "\n"); },
+                    {f + ":3:11:", "layers (surface crossings per pixel) must be an integer from 1 to 16"});
+}
+
 TEST(SceneFile, RepresentationsAndDefaultScalars) {
     test::TempDir dir;
     const auto d = parseIn(dir,

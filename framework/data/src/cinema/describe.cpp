@@ -1,6 +1,7 @@
 // What `darkroom info` shows about a database: its rows, each column's type
 // and range, and per FILE column the channels, size and camera of a product.
 #include <darkroom/error.h>
+#include <darkroom/layers.h>
 #include <darkroom/data/cinema/composable.h>
 #include <darkroom/data/cinema/consistency.h>
 #include <darkroom/data/cinema/database.h>
@@ -40,6 +41,33 @@ void describeNpz(CinemaProductInfo& p, bool composable) {
             p.height = int(a.shape[composable ? 1 : 0]);
         }
     }
+}
+
+// "layers   4 (Z, N, objectId, height per layer)" for a G-buffer with
+// layer<k>.Z channels (darkroom/layers.h); nothing for an ordinary one.
+void describeLayers(CinemaProductInfo& p) {
+    int count = 1;
+    auto has = [&p](const std::string& name) {
+        for (const auto& ch : p.channels)
+            if (ch.name == name) return true;
+        return false;
+    };
+    while (has(layers::channel("Z", count))) ++count;
+    if (count == 1) return;
+    std::string perLayer;
+    bool normals = false;
+    for (const auto& ch : p.channels) {
+        const auto [layer, name] = layers::parse(ch.name);
+        if (layer != 0) continue;
+        if (name == "N.x" || name == "N.y" || name == "N.z") {
+            if (normals) continue;
+            normals = true;
+            perLayer += std::string(perLayer.empty() ? "" : ", ") + "N";
+            continue;
+        }
+        perLayer += (perLayer.empty() ? "" : ", ") + name;
+    }
+    p.details.push_back(fmt::format("layers   {} ({} per layer; layer<k>.<channel> for k >= 1)", count, perLayer));
 }
 
 }  // namespace
@@ -83,6 +111,7 @@ CinemaDescription CinemaDatabase::describe() const {
                     p.height = image->height();
                     p.channels = image->channels();
                     p.camera = image->metadata().camera;
+                    describeLayers(p);
                     for (const auto& n : notes) p.details.push_back(n.message);
                 }
             } catch (const std::exception& e) {

@@ -1,0 +1,160 @@
+#include "layered_tile.h"
+
+#include "k_nearest_context.h"
+#include "nearest_hit_rule.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace darkroom::embree {
+
+namespace {
+
+// The packet shape of the one-layer capture (embree_backend.cpp), so that
+// layer 0 is traced exactly as it traces its nearest hits.
+constexpr int kPacketW = 4;
+constexpr int kPacketH = 2;
+
+// One layer's hits for the 8 lanes of a packet, laid out as PacketHits
+// reads them.
+struct LayerLanes {
+    alignas(32) float t[8];
+    alignas(32) unsigned geomID[8];
+    alignas(32) unsigned primID[8];
+    alignas(32) float u[8];
+    alignas(32) float v[8];
+    alignas(32) float ng[3][8];
+
+    void set(int k, const Crossing& c) {
+        t[k] = c.t;
+        geomID[k] = c.geomID;
+        primID[k] = c.primID;
+        u[k] = c.u;
+        v[k] = c.v;
+        for (int a = 0; a < 3; ++a) ng[a][k] = c.ng[a];
+    }
+    void miss(int k) { set(k, Crossing{std::numeric_limits<float>::infinity(), GBufferWriter::kMissID,
+                                       GBufferWriter::kMissID, 0.0f, 0.0f, {0.0f, 0.0f, 0.0f}}); }
+    // Lane k's committed hit after rtcIntersect8 (or a miss).
+    void take(int k, const RTCRayHit8& rh) {
+        if (rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) return miss(k);
+        set(k, Crossing{rh.ray.tfar[k], rh.hit.geomID[k], rh.hit.primID[k], rh.hit.u[k], rh.hit.v[k],
+                        {rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]}});
+    }
+};
+
+struct Packet {
+    alignas(32) RTCRayHit8 rh;
+    alignas(32) int valid[8];
+    int cell[8];
+};
+
+// The primary rays of the 4x2 block at (px, py); lanes outside the tile's
+// [x0, x1) x [y0, y1) are switched off.
+void loadPacket(Packet& p, const PrimaryRays& rays, int px, int py, int x0, int y0, int x1, int y1) {
+    RTCRayHit8& rh = p.rh;
+    for (int k = 0; k < 8; ++k) {
+        const int x = px + k % kPacketW, y = py + k / kPacketW;
+        p.valid[k] = (x < x1 && y < y1) ? -1 : 0;
+        p.cell[k] = (y - y0) * TileBuffer::kSize + (x - x0);
+        float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
+        if (p.valid[k]) rays(x, y, o, d);
+        rh.ray.org_x[k] = o[0];
+        rh.ray.org_y[k] = o[1];
+        rh.ray.org_z[k] = o[2];
+        rh.ray.dir_x[k] = d[0];
+        rh.ray.dir_y[k] = d[1];
+        rh.ray.dir_z[k] = d[2];
+        rh.ray.tnear[k] = 0.0f;
+        rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
+        rh.ray.time[k] = 0.0f;
+        rh.ray.mask[k] = 0xFFFFFFFFu;
+        rh.ray.id[k] = unsigned(k);
+        rh.ray.flags[k] = 0;
+        rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+}
+
+void traceFiltered(RTCScene scene, KNearestContext& ic, Packet& p, LayerLanes* layers, int count) {
+    ic.reset();
+    rtcIntersect8(p.valid, scene, &ic.context, &p.rh);
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < count; ++j) {
+            if (p.valid[k] && j < ic.count[k]) layers[j].set(k, ic.hits[k][j]);
+            else layers[j].miss(k);
+        }
+}
+
+// Layer 0 as the one-layer capture traces it; then each further layer from
+// the previous one's depth, for the lanes that still hit something.
+void traceRepeated(RTCScene scene, NearestHitContext& first, NextCrossingContext& next, Packet& p,
+                   LayerLanes* layers, int count) {
+    first.reset();
+    rtcIntersect8(p.valid, scene, &first.context, &p.rh);
+    alignas(32) int valid[8];
+    for (int k = 0; k < 8; ++k) {
+        layers[0].take(k, p.rh);
+        valid[k] = p.valid[k];
+    }
+    for (int j = 1; j < count; ++j) {
+        bool any = false;
+        for (int k = 0; k < 8; ++k) {
+            const LayerLanes& prev = layers[j - 1];
+            if (!valid[k] || prev.geomID[k] == GBufferWriter::kMissID) {
+                valid[k] = 0;
+                continue;
+            }
+            next.setPrevious(k, prev.t[k], prev.geomID[k], prev.primID[k]);
+            p.rh.ray.tnear[k] = prev.t[k];
+            p.rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
+            p.rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+            p.rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+            any = true;
+        }
+        if (any) rtcIntersect8(valid, scene, &next.context, &p.rh);
+        for (int k = 0; k < 8; ++k) {
+            if (valid[k]) layers[j].take(k, p.rh);
+            else layers[j].miss(k);
+        }
+    }
+}
+
+void writeLayer(const GBufferWriter& writer, const Packet& p, const LayerLanes& l, TileBuffer& tile) {
+    const RTCRay8& r = p.rh.ray;
+    writer.packet(PacketHits{8, p.valid, l.t, l.geomID, l.primID, l.u, l.v, {l.ng[0], l.ng[1], l.ng[2]},
+                             {r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}},
+                  p.cell, tile);
+}
+
+}  // namespace
+
+LayeredTileState::LayeredTileState(const std::vector<GBufferWriter>& writers) {
+    tiles.reserve(writers.size());
+    for (const auto& w : writers) tiles.push_back(w.tileBuffer());
+}
+
+void traceLayeredTile(RTCSceneTy* scene, LayerMethod method, const PrimaryRays& rays,
+                      const std::vector<GBufferWriter>& writers, LayeredTileState& state, int width, int height,
+                      int x0, int y0) {
+    const int count = int(writers.size());
+    KNearestContext nearestK(RTC_INTERSECT_CONTEXT_FLAG_COHERENT, count);
+    NearestHitContext first(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
+    NextCrossingContext next(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
+    Packet p;
+    LayerLanes layers[CaptureRequest::kMaxLayers];
+    const int x1 = std::min(x0 + TileBuffer::kSize, width), y1 = std::min(y0 + TileBuffer::kSize, height);
+    for (int py = y0; py < y1; py += kPacketH)
+        for (int px = x0; px < x1; px += kPacketW) {
+            loadPacket(p, rays, px, py, x0, y0, x1, y1);
+            if (method == LayerMethod::Filter) traceFiltered(scene, nearestK, p, layers, count);
+            else traceRepeated(scene, first, next, p, layers, count);
+            for (int j = 0; j < count; ++j) writeLayer(writers[std::size_t(j)], p, layers[j], state.tiles[std::size_t(j)]);
+        }
+    for (int j = 0; j < count; ++j)
+        writers[std::size_t(j)].flush(state.tiles[std::size_t(j)], x0, y0, x1 - x0, y1 - y0, width);
+}
+
+}  // namespace darkroom::embree
