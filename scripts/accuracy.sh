@@ -5,8 +5,12 @@
 # minutes on 2 cores at the default size (192 x 192 scenes); 10 measured with
 # a warm ccache on an idle machine.
 #
-#   scripts/accuracy.sh [--quick] [--size N]
+#   scripts/accuracy.sh [--quick] [--size N] [--sweep NAME]...
 #   scripts/accuracy.sh --report-only
+#
+# --sweep NAME (repeatable) runs only those sweeps and keeps the committed
+# CSV files and pictures of the others: each sweep's figures still come from
+# one run, and the page names the run of each.
 #
 # Writes docs/accuracy/data/*.csv, docs/images/accuracy/*.png and
 # docs/accuracy.md (from bench/accuracy/accuracy.md.in). --report-only skips
@@ -16,13 +20,15 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 size=192
 quick=()
+only=()
 report_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=(--quick); size=128 ;;
     --size) size=$2; shift ;;
     --report-only) report_only=1 ;;
-    *) echo "usage: scripts/accuracy.sh [--quick] [--size N] | --report-only" >&2; exit 2 ;;
+    --sweep) only+=(--sweep "$2"); shift ;;
+    *) echo "usage: scripts/accuracy.sh [--quick] [--size N] [--sweep NAME]... | --report-only" >&2; exit 2 ;;
   esac
   shift
 done
@@ -44,7 +50,13 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # Sweep and report into a scratch copy of docs/ first, so a failed run leaves
 # the committed results alone and the page's relative links are already right.
-"$DARKROOM_BUILD_DIR/bin/bench_accuracy" --size "$size" --repeats 2 "${quick[@]}" \
+if [ ${#only[@]} -gt 0 ]; then
+  # The other sweeps' committed results stay as they are.
+  mkdir -p "$tmp/accuracy/data" "$tmp/images"
+  cp "$data"/*.csv "$tmp/accuracy/data/"
+  cp -r "$images" "$tmp/images/accuracy"
+fi
+"$DARKROOM_BUILD_DIR/bin/bench_accuracy" --size "$size" --repeats 2 "${quick[@]}" "${only[@]}" \
   --out "$tmp/accuracy/data" --images "$tmp/images/accuracy"
 /usr/bin/python3 "$root/bench/accuracy/report.py" --data "$tmp/accuracy/data" --images "$tmp/images/accuracy" \
   --template "$root/bench/accuracy/accuracy.md.in" --out "$tmp/accuracy.md"

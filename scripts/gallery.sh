@@ -24,6 +24,12 @@ if [ ! -d "$root/out/publish/teaser.cdb" ]; then
   mkdir -p "$root/out/publish"
   "$darkroom" capture "$root/docs/examples/publish/teaser-scene.yaml" --output "$root/out/publish/teaser.cdb"
 fi
+# The nested-isosurface figure's two captures: translucent shells with 4
+# layers, and the opaque core.
+for part in shells core; do
+  [ -d "$root/out/publish/$part.cdb" ] ||
+    "$darkroom" capture "$root/docs/examples/publish/nested-$part-scene.yaml" --output "$root/out/publish/$part.cdb"
+done
 # The particle AO figure's scene: tracers kept as a point list over a floor.
 if [ ! -d "$root/out/publish/particles.cdb" ]; then
   "$darkroom" capture "$root/docs/examples/publish/particles-ao-scene.yaml" --output "$root/out/publish/particles.cdb"
@@ -45,7 +51,7 @@ done
 for pipeline in "$root"/docs/examples/publish/*.yaml; do
   name=$(basename "$pipeline" .yaml)
   case "$name" in
-    teaser-scene|particles-ao-scene) continue ;;
+    *-scene) continue ;;
     foreach-*) args=(--foreach read --output "$root/out/publish") ;;
     *) args=(--output "$root/docs/gallery") ;;
   esac
@@ -72,7 +78,7 @@ fi
 # stays at the 2048 x 1024 it is rendered at.
 for png in "$root"/docs/gallery/*.png; do
   case "$(basename "$png")" in
-    publish-teaser.png) continue ;;
+    publish-teaser.png|publish-nested-translucent.png) continue ;;
     publish-orbit.png) width=1024 ;;
     publish-particles-ao.png) width=1200 ;;  # the difference is per particle
     volume-normals.png) width=768 ;;

@@ -22,6 +22,8 @@ run_all() {
   done
   "$darkroom" -q capture "$ex/publish/teaser-scene.yaml" -o "$out/publish/teaser.cdb"
   "$darkroom" -q capture "$ex/publish/particles-ao-scene.yaml" -o "$out/publish/particles.cdb"
+  "$darkroom" -q capture "$ex/publish/nested-shells-scene.yaml" -o "$out/publish/shells.cdb"
+  "$darkroom" -q capture "$ex/publish/nested-core-scene.yaml" -o "$out/publish/core.cdb"
   if [ -n "$blobs" ] && [ -f "$blobs" ]; then
     cp -p "$blobs" "$out/volume/blobs.vtu"  # same time: the marker records it
     "$darkroom" -q capture "$ex/volume/tetrahedra.yaml" -o "$out/volume/tetrahedra.cdb"
@@ -29,7 +31,7 @@ run_all() {
   for pipeline in "$ex"/*.yaml "$ex"/ttk/*.yaml "$ex"/volume/volume-*.yaml "$ex"/publish/*.yaml; do
     name=$(basename "$pipeline" .yaml)
     case "$name" in
-      teaser-scene|particles-ao-scene) continue ;;
+      *-scene) continue ;;
       foreach-*) "$darkroom" -q run "$pipeline" --foreach read --output "$out/publish" || echo "FAILED: $name" ;;
       *) "$darkroom" -q run "$pipeline" --output "$out/gallery" || echo "FAILED: $name" ;;
     esac

@@ -31,6 +31,7 @@ SWEEPS = {
     "normals": {"metric": "angle_p95", "label": "95th-percentile angular error (deg)", "threshold": 30.0},
     "fxaa": {"metric": "rmse", "label": "RGB RMSE vs 16x16 supersampling", "threshold": 0.03},
     "dof": {"metric": "rmse", "label": "RGB RMSE vs thin-lens reference", "threshold": 0.03},
+    "transparency": {"metric": "rmse", "label": "RGB RMSE vs every crossing in depth order", "threshold": 0.02},
 }
 
 # Settings that equal each pass's default: the failure map and the
@@ -47,6 +48,7 @@ DEFAULT_SETTINGS = {
     ("fxaa", "FXAA"): "preset 12",
     ("fxaa", "SSAA"): "2x2",
     ("dof", "SSDoF disc"): "samples 64",
+    ("transparency", "layers + ColorMapping"): "K=4",
 }
 
 
@@ -91,6 +93,13 @@ FAILURE_RULES = {
         or _value(own, "all", "rmse") > 0.02,
         "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.4f} "
         f"({_value(own, 'all', 'rmse') / _value(base, 'all', 'rmse'):.0%} of the 1-spp error)",
+    },
+    "transparency": {
+        "methods": ["layers + ColorMapping"],
+        "rule": "RGB RMSE over covered pixels > 0.02 (fewer layers than the surfaces a ray crosses)",
+        "panels": "",
+        "judge": lambda own, base, floor: _value(own, "all", "rmse") > 0.02,
+        "quote": lambda own, base, floor: f"{_value(own, 'all', 'rmse'):.3f} (beyond K: {_value(own, 'beyond K', 'rmse'):.3f})",
     },
     "dof": {
         "methods": ["SSDoF disc", "SSDoF hexagon"],
@@ -470,6 +479,62 @@ def beats_ray_tracing(rows):
     return "\n".join(lines)
 
 
+def layers_table(rows):
+    """Issue 30's table: per transparency scene, its depth complexity, and for
+    each K the RGB error, the capture's cost against K = 1 and the EXR bytes."""
+    sel = [r for r in rows if r["sweep"] == "transparency" and r["region"] == "all"]
+    scenes = []
+    for r in sel:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    if not scenes:
+        return ""
+    ks = sorted({int(r["quality"]) for r in sel if r["method"] == "layers + ColorMapping"})
+
+    def value(scene, k, metric, region="all"):
+        for r in rows:
+            if (r["sweep"] == "transparency" and r["scene"] == scene and r["region"] == region
+                    and r["metric"] == metric and (k is None or int(r["quality"]) == k)):
+                return r["value"]
+        return math.nan
+
+    head = "| scene | crossings (max) | " + " | ".join(f"K = {k}: RMSE / capture × / bytes per px" for k in ks) + " |"
+    lines = [head, "|---|---|" + "---|" * len(ks)]
+    for scene in scenes:
+        one = value(scene, ks[0], "capture_ms_per_mpix")
+        cells = []
+        for k in ks:
+            e, beyond = value(scene, k, "rmse"), value(scene, k, "rmse", "beyond K")
+            cost, size = value(scene, k, "capture_ms_per_mpix") / one, value(scene, k, "bytes_per_pixel")
+            mark = "**" if e > SWEEPS["transparency"]["threshold"] else ""
+            cells.append(f"{mark}{e:.3g}{mark} / {cost:.2g}× / {size:.3g}")
+        lines.append(f"| {scene} | {value(scene, None, 'max_crossings'):.0f} | " + " | ".join(cells) + " |")
+    lines += ["", "RMSE over covered pixels of the RGB picture (bold: above 0.02); capture × = the K-layer "
+              "capture's time over the one-layer capture's of the same scene (issue 30 asks ≤ 1.5 K); bytes per "
+              "pixel of the G-buffer as a zip EXR (Z, the colour field and objectId per layer)."]
+    return "\n".join(lines)
+
+
+def layers_storage_table(rows):
+    """The storage table's layers rows: bytes per pixel of a layered G-buffer
+    (zip EXR) against K, and against K = 1."""
+    sel = [r for r in rows if r["sweep"] == "transparency" and r["metric"] == "bytes_per_pixel"]
+    if not sel:
+        return ""
+    ks = sorted({int(r["quality"]) for r in sel})
+    scenes = []
+    for r in sel:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    lines = ["| scene (Z, colour field, objectId per layer) | " + " | ".join(f"K = {k}" for k in ks) + " |",
+             "|---|" + "---|" * len(ks)]
+    for scene in scenes:
+        by_k = {int(r["quality"]): r["value"] for r in sel if r["scene"] == scene}
+        one = by_k.get(ks[0], math.nan)
+        lines.append(f"| {scene} | " + " | ".join(f"{by_k[k]:.3g} B ({by_k[k] / one:.2g}×)" for k in ks) + " |")
+    return "\n".join(lines)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data", required=True, help="folder with bench_accuracy's CSV files")
@@ -495,6 +560,8 @@ def main():
     blocks["scenes"] = chart_list([contact_sheet(rows, a.images, a.images)], doc_dir)
     blocks["regions:ao"] = region_table(rows, "ao", ["rmse", "bias"])
     blocks["thin:ao"] = beats_ray_tracing(rows)
+    blocks["layers:transparency"] = layers_table(rows)
+    blocks["layers-storage:transparency"] = layers_storage_table(rows)
     blocks["regions:normals"] = region_table(rows, "normals", ["angle_median", "angle_p95", "share_above_5"])
     blocks["regions:fxaa"] = region_table(rows, "fxaa", ["rmse"])
     blocks["regions:dof"] = region_table(rows, "dof", ["rmse"])
