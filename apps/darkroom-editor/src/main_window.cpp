@@ -60,7 +60,7 @@ MainWindow::MainWindow(const darkroom::Registry& registry, const darkroom::Diagn
     if (s.value("layout/version").toInt() == kLayoutVersion) restoreGeometry(s.value("layout/geometry").toByteArray());
 }
 
-// The render view with its channel chooser and Fit button (returned).
+// The render view with its layer and channel choosers and Fit button (returned).
 QToolButton* MainWindow::buildRenderPane() {
     auto* renderPane = new QWidget;
     auto* rl = new QVBoxLayout(renderPane);
@@ -70,9 +70,15 @@ QToolButton* MainWindow::buildRenderPane() {
     bar->setContentsMargins(4, 2, 4, 0);
     channel_ = new QComboBox;
     channel_->setMinimumContentsLength(14);
+    // Only a layered buffer (several surfaces per pixel) offers a layer.
+    layer_ = new QComboBox;
+    layer_->setObjectName("layerChooser");
+    layer_->setToolTip(tr("Layer of a layered buffer: the front-to-back composite of its colour, or one layer"));
+    layer_->hide();
     auto* fit = new QToolButton;
     fit->setText(tr("Fit"));
     bar->addWidget(new QLabel(tr("Show:")));
+    bar->addWidget(layer_);
     bar->addWidget(channel_);
     bar->addWidget(fit);
     bar->addStretch(1);
@@ -159,6 +165,14 @@ void MainWindow::connectParts(QToolButton* fit) {
         channel_->setCurrentText(cur);
     });
     connect(channel_, &QComboBox::currentTextChanged, render_, &RenderView::setMode);
+    connect(render_, &RenderView::layerChoicesChanged, this, [this](const QStringList& choices, const QString& cur) {
+        QSignalBlocker b(layer_);
+        layer_->clear();
+        layer_->addItems(choices);
+        layer_->setCurrentText(cur);
+        layer_->setVisible(!choices.isEmpty());
+    });
+    connect(layer_, &QComboBox::currentTextChanged, render_, &RenderView::setLayerChoice);
     connect(fit, &QToolButton::clicked, render_, &RenderView::fit);
     connect(cinema_, &CinemaPanel::entryChosen, this, &MainWindow::onEntryChosen);
 

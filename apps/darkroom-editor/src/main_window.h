@@ -132,6 +132,7 @@ private:
     GraphView* graphView_;
     RenderView* render_;
     QComboBox* channel_;
+    QComboBox* layer_;  // hidden unless the shown buffer has layers
     Palette* palette_;
     CinemaPanel* cinema_;
     ExplorerPanel* explorer_ = nullptr;

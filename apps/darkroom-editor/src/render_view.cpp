@@ -1,6 +1,7 @@
 #include "render_view.h"
 
 #include "image_program.h"
+#include "layer_choice.h"
 #include "render_surface.h"
 
 #include <QKeyEvent>
@@ -68,23 +69,42 @@ QSizeF RenderView::fullSize() const {
 
 void RenderView::setImage(darkroom::BufferPtr image, int level, std::uint64_t tag) {
     const QSizeF before = fullSize();
-    image_ = std::move(image);
-    level_ = image_ ? level : 0;
+    source_ = std::move(image);
+    level_ = source_ ? level : 0;
     tag_ = tag;
-    imageChanged_ = true;
+    // An ordinary buffer (one layer) has no choices and is shown as it is:
+    // no view is built for it.
+    QStringList choices = source_ ? editor::layerChoices(*source_) : QStringList();
+    const bool newChoices = choices != layerChoices_;
+    layerChoices_ = std::move(choices);
+    if (!layerChoices_.contains(layerChoice_)) layerChoice_ = preferredLayerChoice(layerChoices_);
+    image_ = layerChoices_.isEmpty() ? source_ : chooseLayer(source_, layerChoice_);
     // A preview's size is the full size rounded to 1/2^level: within one
     // preview pixel of the last full frame counts as the same picture.
     const QSizeF now = fullSize();
     const double slack = std::ldexp(1.0, level_);
     const bool sizeChanged = before.isEmpty() != now.isEmpty() || std::abs(before.width() - now.width()) > slack ||
                              std::abs(before.height() - now.height()) > slack;
+    if (sizeChanged) fitted_ = true;
+    if (fitted_) fit();
+    if (newChoices) emit layerChoicesChanged(layerChoices_, layerChoice_);
+    showImage();
+}
+
+void RenderView::setLayerChoice(const QString& choice) {
+    if (choice == layerChoice_ || !layerChoices_.contains(choice)) return;
+    layerChoice_ = choice;
+    image_ = chooseLayer(source_, layerChoice_);
+    showImage();
+}
+
+void RenderView::showImage() {
+    imageChanged_ = true;
     const QStringList modes = image_ ? displayModes(*image_) : QStringList();
     const bool newModes = modes != modes_;
     modes_ = modes;
     if (!modes_.contains(mode_)) mode_ = preferredMode(modes_);
     spec_ = image_ ? displaySpec(*image_, mode_) : DisplaySpec{};
-    if (sizeChanged) fitted_ = true;
-    if (fitted_) fit();
     if (newModes) emit modesChanged(modes_, mode_);
     if (hover_.x() >= 0) updateProbe(hover_);
     requestFrame();

@@ -7,7 +7,8 @@
 // a QOpenGLWidget). The widget keeps the view's state and handles the
 // window's input. A preview image (1/2^level of the full size) is drawn over
 // the area of the full-size image, so the picture does not jump when the
-// full frame lands.
+// full frame lands. A layered buffer (darkroom/layers.h) is shown one layer,
+// or its colour composite, at a time (layer_choice.h).
 #include "display.h"
 
 #include <darkroom/buffer.h>
@@ -33,7 +34,15 @@ public:
     // Null clears. `level`: the image is a preview at 1/2^level of the full
     // size. `tag` is handed back by presented() once the image is on screen.
     void setImage(darkroom::BufferPtr image, int level = 0, std::uint64_t tag = 0);
+    // The buffer shown: for a layered image the chosen layer under the plain
+    // channel names, or the composite; else the image as set.
     const darkroom::BufferPtr& image() const { return image_; }
+    const darkroom::BufferPtr& sourceImage() const { return source_; }
+    // The layer chooser's entries (layer_choice.h; empty for one layer) and
+    // the current one. The choice is kept while new images offer it.
+    const QStringList& layerChoices() const { return layerChoices_; }
+    const QString& layerChoice() const { return layerChoice_; }
+    void setLayerChoice(const QString& choice);
     int level() const { return level_; }
     QStringList modes() const { return modes_; }
     const QString& mode() const { return mode_; }
@@ -69,6 +78,8 @@ public:
 
 signals:
     void modesChanged(const QStringList& modes, const QString& current);
+    // The entries differ from the last image's (empty: one layer, no chooser).
+    void layerChoicesChanged(const QStringList& choices, const QString& current);
     void probed(const QString& text);
     // The image set with `tag` reached the screen (the window's buffers swapped).
     void presented(std::uint64_t tag);
@@ -84,6 +95,8 @@ protected:
 
 private:
     QSizeF fullSize() const;  // the image's size in full-resolution pixels
+    // After image_ changed: the modes it offers, the mapping, the probe.
+    void showImage();
     void updateProbe(QPointF at);
     void initializeGL();
     // Draws the frame into `fbo` (bound), `pixels` in device pixels.
@@ -93,7 +106,10 @@ private:
     RenderSurface* surface_;  // owned by its container, a child of this widget
 
     std::unique_ptr<ImageProgram> program_;
-    darkroom::BufferPtr image_;
+    darkroom::BufferPtr source_;  // as set
+    darkroom::BufferPtr image_;   // as shown
+    QStringList layerChoices_;
+    QString layerChoice_;
     bool imageChanged_ = false;
     int level_ = 0;
     std::uint64_t tag_ = 0, drawnTag_ = 0, presentedTag_ = 0;
