@@ -43,6 +43,10 @@ DEFAULT_SETTINGS = {
     ("ao", "horizon full resolution"): "slices=4 steps=8",
     ("ao", "hemisphere full resolution"): "samples=16",
     ("ao", "ray traced (cosine)"): "samples=16",
+    ("ao", "lineao"): "samples=16",
+    ("ao", "pointao"): "samples=16",
+    ("ao", "sao"): "taps=16",
+    ("ao", "point list"): "closed form",
     ("ao", "EDL"): "radius=1 scales=2",
     ("ao", "EDL (strength 0.1)"): "radius=1 scales=2",
     ("fxaa", "FXAA"): "preset 12",
@@ -67,7 +71,8 @@ def _value(rows, region, metric):
 # small. `judge(own, base, floor)` gets the rows of one scene.
 FAILURE_RULES = {
     "ao": {
-        "methods": ["horizon", "hemisphere", "horizon points", "hemisphere points", "EDL", "EDL (strength 0.1)"],
+        "methods": ["horizon", "hemisphere", "horizon points", "hemisphere points", "lineao", "pointao", "sao",
+                    "point list", "EDL", "EDL (strength 0.1)"],
         "rule": "RMSE over geometry pixels > 0.05",
         "panels": "SSAO or EDL | reference | 4 × |error| (white = 0.25 or more)",
         "judge": lambda own, base, floor: _value(own, "all", "rmse") > 0.05,
@@ -96,6 +101,7 @@ FAILURE_RULES = {
     },
     "transparency": {
         "methods": ["layers + ColorMapping"],
+        "settings": ["K=1", "K=2", "K=4", "K=8"],
         "rule": "RGB RMSE over covered pixels > 0.02 (fewer layers than the surfaces a ray crosses)",
         "panels": "",
         "judge": lambda own, base, floor: _value(own, "all", "rmse") > 0.02,
@@ -305,8 +311,14 @@ def failure_table(rows, sweep, image_dir, doc_dir):
     for r in rows:
         if r["sweep"] == sweep and r["family"]:
             families[r["family"]][r["scene"]] = (r["knob_value"], r["knob"])
+    judged = []  # (method, its rows at the setting judged)
     for method in rule["methods"]:
-        own_rows = default_rows(rows, sweep, method)
+        if "settings" in rule:  # every listed setting, not only the default
+            judged += [(method, [r for r in rows if r["sweep"] == sweep and r["method"] == method
+                                 and r["setting"] == setting]) for setting in rule["settings"]]
+        else:
+            judged.append((method, default_rows(rows, sweep, method)))
+    for method, own_rows in judged:
         if not own_rows:
             continue
         base_rows = default_rows(rows, sweep, rule["baseline"]) if "baseline" in rule else []
@@ -436,6 +448,9 @@ def chart_list(paths, doc_dir, width=None):
 
 THIN_FAMILIES = ("particles", "streamlines")
 THIN_TARGET = 0.05
+# Scenes the ao sweep adds beyond the families' own knob values: PointListAO's
+# failure rows (sweep_ao.cpp), counted apart from the issue's eleven.
+THIN_EXTRA = ("streamlines-w8", "streamlines-w16")
 
 
 def beats_ray_tracing(rows):
@@ -449,7 +464,7 @@ def beats_ray_tracing(rows):
         return ""
     lines = ["| scene | fastest setting that beats ray tracing | its RMSE @ time | best ray-traced at no more time | "
              "horizon 4 × 8 (default) | point list |", "|---|---|---|---|---|---|"]
-    met = 0
+    met = extra_met = 0
     for scene in scenes:
         mine = [r for r in sel if r["scene"] == scene]
         traced = [r for r in mine if r["method"].startswith("ray traced")]
@@ -466,7 +481,10 @@ def beats_ray_tracing(rows):
         listed = [r for r in mine if r["method"] == "point list"]
         hcell += " | " + (f"{listed[0]['value']:.3g} @ {listed[0]['ms_per_mpix']:.3g} ms" if listed else "–")
         if winners:
-            met += 1
+            if scene in THIN_EXTRA:
+                extra_met += 1
+            else:
+                met += 1
             _, w, rival = min(winners, key=lambda x: x[0])
             rcell = f"{rival['setting']}: {rival['value']:.3g} @ {rival['ms_per_mpix']:.3g} ms" if rival else "none as fast"
             lines.append(f"| {scene} | {w['method']} ({w['setting']}) | {w['value']:.3g} @ {w['ms_per_mpix']:.3g} ms | "
@@ -474,8 +492,11 @@ def beats_ray_tracing(rows):
         else:
             lines.append(f"| {scene} | **none** | – | – | {hcell} |")
     lines.append("")
-    lines.append(f"**{met} of {len(scenes)}** thin scenes have a method with RMSE ≤ {THIN_TARGET:g} that every "
-                 "ray-traced setting at no more time per megapixel is worse than.")
+    extra = [sc for sc in scenes if sc in THIN_EXTRA]
+    lines.append(f"**{met} of {len(scenes) - len(extra)}** particle and streamline scenes of the families' sweeps "
+                 f"have a method with RMSE ≤ {THIN_TARGET:g} that every ray-traced setting at no more time per "
+                 "megapixel is worse than" + (f"; of the {len(extra)} wider line scenes added as PointListAO's "
+                 f"failure rows, {extra_met}." if extra else "."))
     return "\n".join(lines)
 
 
