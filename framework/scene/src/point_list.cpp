@@ -52,4 +52,21 @@ PointList readPointList(const std::string& path) {
     return lowerExtension(path) == ".csv" ? readPointListCsv(path) : meshPoints(path);
 }
 
+PointList readNodePointList(Context& ctx, std::string spec, const std::function<const Row&()>& row,
+                            std::string* resolved) {
+    if (spec.empty())
+        throw Error("no point list given; set 'points' to a CSV (x, y, z[, radius, line, fields]) or mesh file");
+    if (hasRowPlaceholders(spec)) {
+        const Row& r = row();
+        if (r.empty()) throw Error("'points' (" + spec + ") has placeholders but 'row' is empty; connect CinemaReader's row");
+        spec = fillRowPlaceholders(spec, r, "points");
+    }
+    const std::string path = ctx.resolveInputPath(spec);
+    ctx.readsFile(path);
+    if (resolved) *resolved = path;
+    PointList list = readPointList(path);
+    for (const auto& w : list.warnings) ctx.warn(w);
+    return list;
+}
+
 }  // namespace darkroom

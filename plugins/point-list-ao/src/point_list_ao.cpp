@@ -52,18 +52,8 @@ void PointListAo::execute(Context& ctx) {
     const float* z = requireDepth(*in);
     const Camera camera = requireCamera(*in, "input 'image'");
 
-    std::string spec = ctx.getString(points_.name());
-    if (spec.empty()) throw Error("no point list given; set 'points' to a CSV (x, y, z[, radius, line, fields]) or mesh file");
-    if (hasRowPlaceholders(spec)) {
-        const Row& row = ctx.get(row_);
-        if (row.empty())
-            throw Error("'points' (" + spec + ") has placeholders but 'row' is empty; connect CinemaReader's row");
-        spec = fillRowPlaceholders(spec, row, "points");
-    }
-    const std::string path = ctx.resolveInputPath(spec);
-    ctx.readsFile(path);
-    const PointList list = readPointList(path);
-    for (const auto& w : list.warnings) ctx.warn(w);
+    const PointList list =
+        readNodePointList(ctx, ctx.getString(points_.name()), [&]() -> const Row& { return ctx.get(row_); });
 
     const ViewGeometry view(camera, in->width(), in->height());
     const bool perImageHeight = ctx.get(radiusUnits_) == RadiusUnits::ImageHeight;

@@ -22,18 +22,9 @@ void Spheres::execute(Context& ctx) {
     const BufferPtr in = ctx.get(image_);
     const Camera camera = requireCamera(*in, "input 'image'");
 
-    std::string spec = ctx.getString(points_.name());
-    if (spec.empty()) throw Error("no point list given; set 'points' to a CSV (x, y, z[, radius, fields]) or mesh file");
-    if (hasRowPlaceholders(spec)) {
-        const Row& row = ctx.get(row_);
-        if (row.empty())
-            throw Error("'points' (" + spec + ") has placeholders but 'row' is empty; connect CinemaReader's row");
-        spec = fillRowPlaceholders(spec, row, "points");
-    }
-    const std::string path = ctx.resolveInputPath(spec);
-    ctx.readsFile(path);
-    const PointList list = readPointList(path);
-    for (const auto& w : list.warnings) ctx.warn(w);
+    std::string path;
+    const PointList list =
+        readNodePointList(ctx, ctx.getString(points_.name()), [&]() -> const Row& { return ctx.get(row_); }, &path);
 
     const double fallback = ctx.get(radius_), scale = ctx.get(radiusScale_);
     std::vector<spheres::Sphere> balls(list.size());
