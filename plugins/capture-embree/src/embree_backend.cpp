@@ -6,6 +6,7 @@
 #include "layered_tile.h"
 #include "nearest_hit_rule.h"
 #include "packet_rows.h"
+#include "primary_packet.h"
 #include "primary_rays.h"
 
 #include <darkroom/error.h>
@@ -24,9 +25,7 @@ namespace {
 // from coherence; the COHERENT flag says so). The split is fixed, whatever the
 // thread count, so every pixel is traced in the same packet every time.
 constexpr int kTile = 16;
-constexpr int kPacketW = 4;
-constexpr int kPacketH = 2;
-static_assert(kPacketW * kPacketH == 8 && kTile % kPacketW == 0 && kTile % kPacketH == 0);
+static_assert(kTile % kPacketW == 0 && kTile % kPacketH == 0);
 
 class EmbreeBackend final : public CaptureBackend {
 public:
@@ -223,21 +222,10 @@ private:
                           TileBuffer& buffer, int width, int height, int x0, int y0) {
         static_assert(kTile == TileBuffer::kSize);
         static_assert(RTC_INVALID_GEOMETRY_ID == GBufferWriter::kMissID);
-        struct Packet {
-            alignas(32) RTCRayHit8 rh;
-            alignas(32) int valid[8];
-            int cell[8];
-        };
+        using Packet = PrimaryPacket;
         constexpr int kInFlight = 3;
         Packet packets[kInFlight];
-        for (Packet& p : packets)
-            for (int k = 0; k < 8; ++k) {  // what Embree does not change: set once for the tile
-                p.rh.ray.tnear[k] = 0.0f;
-                p.rh.ray.time[k] = 0.0f;
-                p.rh.ray.mask[k] = 0xFFFFFFFFu;
-                p.rh.ray.id[k] = unsigned(k);
-                p.rh.ray.flags[k] = 0;
-            }
+        for (Packet& p : packets) setFixedRayFields(p);  // once for the tile
         auto hitsOf = [](Packet& p) {
             RTCRayHit8& rh = p.rh;
             return PacketHits{8, p.valid, rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
@@ -250,23 +238,7 @@ private:
             for (int px = x0; px < x1; px += kPacketW) {
                 Packet& p = packets[traced % kInFlight];
                 RTCRayHit8& rh = p.rh;
-                // Edge tiles keep the packet shape and switch lanes off.
-                for (int k = 0; k < 8; ++k) {
-                    const int x = px + k % kPacketW, y = py + k / kPacketW;
-                    p.valid[k] = (x < x1 && y < y1) ? -1 : 0;
-                    p.cell[k] = (y - y0) * TileBuffer::kSize + (x - x0);
-                    float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
-                    if (p.valid[k]) rays(x, y, o, d);
-                    rh.ray.org_x[k] = o[0];
-                    rh.ray.org_y[k] = o[1];
-                    rh.ray.org_z[k] = o[2];
-                    rh.ray.dir_x[k] = d[0];
-                    rh.ray.dir_y[k] = d[1];
-                    rh.ray.dir_z[k] = d[2];
-                    rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
-                    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-                    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-                }
+                loadPrimaryRays(p, rays, px, py, x0, y0, x1, y1);
                 ic->reset();
                 rtcIntersect8(p.valid, scene, &ic->context, &rh);
                 for (int k = 0; k < 8; ++k)

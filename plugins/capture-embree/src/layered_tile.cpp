@@ -2,6 +2,7 @@
 
 #include "k_nearest_context.h"
 #include "nearest_hit_rule.h"
+#include "primary_packet.h"
 
 #include <embree3/rtcore.h>
 
@@ -11,11 +12,6 @@
 namespace darkroom::embree {
 
 namespace {
-
-// The packet shape of the one-layer capture (embree_backend.cpp), so that
-// layer 0 is traced exactly as it traces its nearest hits.
-constexpr int kPacketW = 4;
-constexpr int kPacketH = 2;
 
 // One layer's hits for the 8 lanes of a packet, laid out as PacketHits
 // reads them.
@@ -45,37 +41,13 @@ struct LayerLanes {
     }
 };
 
-struct Packet {
-    alignas(32) RTCRayHit8 rh;
-    alignas(32) int valid[8];
-    int cell[8];
-};
+using Packet = PrimaryPacket;
 
-// The primary rays of the 4x2 block at (px, py); lanes outside the tile's
-// [x0, x1) x [y0, y1) are switched off.
+// Packet p loaded with the block at (px, py); the repeated trace moves
+// tnear, so the fixed fields are set again each time.
 void loadPacket(Packet& p, const PrimaryRays& rays, int px, int py, int x0, int y0, int x1, int y1) {
-    RTCRayHit8& rh = p.rh;
-    for (int k = 0; k < 8; ++k) {
-        const int x = px + k % kPacketW, y = py + k / kPacketW;
-        p.valid[k] = (x < x1 && y < y1) ? -1 : 0;
-        p.cell[k] = (y - y0) * TileBuffer::kSize + (x - x0);
-        float o[3] = {0, 0, 0}, d[3] = {0, 0, 1};
-        if (p.valid[k]) rays(x, y, o, d);
-        rh.ray.org_x[k] = o[0];
-        rh.ray.org_y[k] = o[1];
-        rh.ray.org_z[k] = o[2];
-        rh.ray.dir_x[k] = d[0];
-        rh.ray.dir_y[k] = d[1];
-        rh.ray.dir_z[k] = d[2];
-        rh.ray.tnear[k] = 0.0f;
-        rh.ray.tfar[k] = std::numeric_limits<float>::infinity();
-        rh.ray.time[k] = 0.0f;
-        rh.ray.mask[k] = 0xFFFFFFFFu;
-        rh.ray.id[k] = unsigned(k);
-        rh.ray.flags[k] = 0;
-        rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-    }
+    setFixedRayFields(p);
+    loadPrimaryRays(p, rays, px, py, x0, y0, x1, y1);
 }
 
 void traceFiltered(RTCScene scene, KNearestContext& ic, Packet& p, LayerLanes* layers, int count) {

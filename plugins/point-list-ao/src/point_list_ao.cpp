@@ -60,12 +60,17 @@ void PointListAo::execute(Context& ctx) {
     const float radius = float(ctx.get(radius_));
     // World radius at depth zp: a fraction of the image height there.
     auto radiusAt = [&](float zp) { return perImageHeight ? radius * view.pixelSizeAt(zp) * float(in->height()) : radius; };
-    // Cells half the radius wide, at the middle depth of the list when the
+    // Cells half the radius wide, at the list's median depth when the
     // radius follows depth.
     const listao::Primitives prims = listao::listPrimitives(list, camera, ctx.get(pointRadius_), ctx.get(radiusScale_));
+    std::vector<float> depths;
+    for (const V3f& c : prims.centres) depths.push_back(c.z);
+    for (const V3f& a : prims.segA) depths.push_back(a.z);
     float typicalDepth = 1.0f;
-    if (!prims.centres.empty()) typicalDepth = std::max(1e-6f, prims.centres[prims.centres.size() / 2].z);
-    else if (!prims.segA.empty()) typicalDepth = std::max(1e-6f, prims.segA[prims.segA.size() / 2].z);
+    if (!depths.empty()) {
+        std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2), depths.end());
+        typicalDepth = std::max(1e-6f, depths[depths.size() / 2]);
+    }
     const listao::PrimitiveGrid grid(prims, 0.5f * radiusAt(typicalDepth));
     const listao::ListOcclusion occlusion(grid);
     ctx.progress(0.1);
@@ -76,24 +81,33 @@ void PointListAo::execute(Context& ctx) {
     const float intensity = float(ctx.get(intensity_)), power = float(ctx.get(power_));
     auto out = ctx.derive(in, {"AO"}, Fill::None);
     float* ao = out->writeFloat("AO");
-    const int w = in->width();
-    ctx.parallelFor(0, in->height(), 1, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                float a = 1.0f;
-                if (isSurface(z[i]) && z[i] > 0) {
-                    const V3f p = view.position(x, y, z[i]);
-                    V3f n = normalize(view.toView(Vec3{normals.at[0][i], normals.at[1][i], normals.at[2][i]}));
-                    if (!normals.captured) occlusion.surfaceNormal(p, 1e-3f * view.pixelSizeAt(z[i]) + 1e-5f * z[i], n);
-                    if (dot(n, view.toCamera(p)) < 0) n = n * -1.0f;
-                    if (std::isfinite(n.x + n.y + n.z)) a = occlusion.visibility(p, n, radiusAt(z[i]));
-                    a = std::pow(std::clamp(1.0f - intensity * (1.0f - a), 0.0f, 1.0f), power);
-                }
-                ao[i] = before ? a * before[i] : a;
+    const int w = in->width(), h = in->height();
+    auto shadeRow = [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            float a = 1.0f;
+            if (isSurface(z[i]) && z[i] > 0) {
+                const V3f p = view.position(x, y, z[i]);
+                V3f n = normalize(view.toView(Vec3{normals.at[0][i], normals.at[1][i], normals.at[2][i]}));
+                if (!normals.captured) occlusion.surfaceNormal(p, 1e-3f * view.pixelSizeAt(z[i]) + 1e-5f * z[i], n);
+                if (dot(n, view.toCamera(p)) < 0) n = n * -1.0f;
+                if (std::isfinite(n.x + n.y + n.z)) a = occlusion.visibility(p, n, radiusAt(z[i]));
+                a = std::pow(std::clamp(1.0f - intensity * (1.0f - a), 0.0f, 1.0f), power);
             }
-    });
-    ctx.progress(1.0);
+            ao[i] = before ? a * before[i] : a;
+        }
+    };
+    // Bands of rows between progress reports and cancellation checks: a
+    // dense list takes seconds.
+    constexpr int kBand = 32;
+    for (int b0 = 0; b0 < h; b0 += kBand) {
+        const int b1 = std::min(h, b0 + kBand);
+        ctx.parallelFor(b0, b1, 1, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) shadeRow(y);
+        });
+        if (ctx.cancelled()) throw Cancelled();
+        ctx.progress(0.1 + 0.9 * double(b1) / h);
+    }
     ctx.set(result_, out);
 }
 
