@@ -3,7 +3,8 @@
 # by the main build, the benchmarks and the fuzz project.
 #
 # Defines darkroom_deflate, an interface target with libdeflate's include
-# folder and library. Only png_encoder.cpp includes libdeflate.h.
+# folder and library. png_encoder.cpp and run_deflate.cpp (for Adler-32)
+# include libdeflate.h.
 if(TARGET darkroom_deflate)
   return()
 endif()

@@ -1,8 +1,9 @@
 // PNG encoding of a colour-mapped picture (test_picture.h) at 1024² and
 // 2048²: time per encode and the file's bytes (counter "bytes"), for the
 // writer before libdeflate (libpng, zlib level 2, "up"), libpng's default,
-// zlib level 1 with each filter, and libdeflate at several levels and
-// filters (docs/performance.md, "Codecs").
+// zlib level 1 with each filter, libdeflate at several levels and filters,
+// and the run encoder the writer uses (run_deflate.h) with each filter
+// (docs/performance.md, "Codecs").
 #include "libpng_encode.h"
 #include "test_picture.h"
 
@@ -45,6 +46,12 @@ Encode libdeflate(int level, PngFilter filter) {
     };
 }
 
+Encode runs(PngFilter filter) {
+    return [=](const std::vector<unsigned char>& p, int size) {
+        return darkroom::io::encodePng({size, size, 4, p.data()}, {filter, 1, darkroom::io::Deflater::Runs});
+    };
+}
+
 double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 
 void add(const std::string& name, Encode encode) {
@@ -71,6 +78,7 @@ int registerAll() {
     for (int level : {2, 3, 4, 6})
         add("libdeflate_l" + std::to_string(level) + "_up", libdeflate(level, PngFilter::Up));
     add("libdeflate_l6_adaptive", libdeflate(6, PngFilter::Adaptive));
+    for (const auto& [name, f] : filters) add(std::string("runs_") + name, runs(f));
     return 0;
 }
 const int registered = registerAll();

@@ -1,10 +1,12 @@
-// Decodes a PNG (libpng) and encodes its pixels again as the writer did
-// before libdeflate (libpng_encode.h: zlib level 2, "up", the same chunks).
-// With the examples' manifest, this shows that a new PNG holds the very
-// pixels of the recorded one: same re-encoded bytes, same SHA-256
-// (bench/codecs/check_pngs_against_manifest.sh).
-//   png_reencode_before IN.png OUT.png
+// Decodes a PNG (libpng) and encodes its pixels again as an earlier writer
+// did: `libpng-z2` before libdeflate (libpng_encode.h: zlib level 2, "up",
+// the same chunks), `libdeflate-l1` before the run encoder (png_encoder.h:
+// libdeflate level 1, "up"). With the examples' manifest, this shows that a
+// new PNG holds the very pixels of the recorded one: same re-encoded bytes,
+// same SHA-256 (bench/codecs/check_pngs_against_manifest.sh).
+//   png_reencode_before libpng-z2|libdeflate-l1 IN.png OUT.png
 #include "libpng_encode.h"
+#include "png_encoder.h"
 
 #include <png.h>
 
@@ -15,10 +17,12 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: %s IN.png OUT.png\n", argv[0]);
+    const std::string as = argc == 4 ? argv[1] : "";
+    if (as != "libpng-z2" && as != "libdeflate-l1") {
+        std::fprintf(stderr, "usage: %s libpng-z2|libdeflate-l1 IN.png OUT.png\n", argv[0]);
         return 2;
     }
+    ++argv;
     std::ifstream in(argv[1], std::ios::binary);
     const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     png_image image{};
@@ -38,8 +42,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", argv[1], image.message);
         return 1;
     }
-    const std::string png = darkroom::bench::libpngEncode(pixels.data(), int(image.width), int(image.height), channels,
-                                                          2, PNG_FILTER_UP);
+    const int w = int(image.width), h = int(image.height);
+    const std::string png = as == "libpng-z2"
+                                ? darkroom::bench::libpngEncode(pixels.data(), w, h, channels, 2, PNG_FILTER_UP)
+                                : darkroom::io::encodePng({w, h, channels, pixels.data()}, {darkroom::io::PngFilter::Up, 1});
     std::ofstream(argv[2], std::ios::binary).write(png.data(), std::streamsize(png.size()));
     return 0;
 }

@@ -1,5 +1,5 @@
 // The native PNG encoder (framework/data/src/io/png_encoder.h, compiled into
-// this test): every filter and level decodes back pixel for pixel through
+// this test): every filter and level, and the run encoder, decodes back pixel for pixel through
 // libpng (which checks every CRC and the zlib stream), for grey, grey+alpha,
 // RGB and RGBA; the chunks are those libpng wrote before (IHDR, gAMA, sRGB,
 // cHRM with the same bytes, IDAT, IEND); a large image spans several IDATs.
@@ -83,9 +83,10 @@ TEST(PngEncoder, EveryFilterLevelAndLayoutDecodesPixelExact) {
     for (int channels = 1; channels <= 4; ++channels)
         for (auto [w, h] : {std::pair{1, 1}, std::pair{7, 5}, std::pair{33, 17}})
             for (PngFilter f : allFilters)
-                for (int level : {0, 1, 6, 12}) {
+                for (int level : {0, 1, 6, 12, -1}) {  // -1: the run encoder
                     const auto px = picture(w, h, channels);
-                    const std::string png = encodePng({w, h, channels, px.data()}, {f, level});
+                    const PngEncoding e = level < 0 ? PngEncoding{f, 1, Deflater::Runs} : PngEncoding{f, level};
+                    const std::string png = encodePng({w, h, channels, px.data()}, e);
                     EXPECT_EQ(decode(png, channels), px) << channels << " channels, " << w << "x" << h << ", filter "
                                                          << int(f) << ", level " << level;
                 }

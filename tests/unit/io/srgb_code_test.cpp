@@ -89,3 +89,24 @@ TEST(SrgbCode, TheImageEncoderGivesThePlainFormulasCodes) {
         EXPECT_EQ(int(pixels.data[std::size_t(2 * i + 1)]), plain(values[std::size_t(i)], true)) << values[std::size_t(i)];
     }
 }
+
+// The encoder skips spans whose every value gives code 0 (background): a
+// lone lit value anywhere among them, at a span's first or last place or in
+// a row's tail shorter than a span, still gets its code.
+TEST(SrgbCode, LitValuesAmongBackgroundKeepTheirCodes) {
+    const int w = 101;  // three spans of 32 and a tail of 5
+    const float background[] = {0.0f, -0.0f, -2.0f, std::nanf(""), -INFINITY};
+    for (int lit : {0, 1, 31, 32, 63, 64, 95, 96, 100}) {
+        auto image = darkroom::makeCpuBuffer(w, 2, {{"Y", darkroom::ChannelType::Float32}, {"A", darkroom::ChannelType::Float32}});
+        float* y = image->writeFloat("Y");
+        float* a = image->writeFloat("A");
+        for (int i = 0; i < 2 * w; ++i) y[i] = a[i] = background[i % 5];
+        y[w + lit] = 0.5f;   // second row: code 188
+        a[lit] = 0.25f;      // first row: alpha lround(63.75) = 64
+        const auto px = darkroom::io::encodeEightBit(*image, "test.png", {}, true);
+        for (int i = 0; i < 2 * w; ++i) {
+            EXPECT_EQ(int(px.data[std::size_t(2 * i)]), i == w + lit ? 188 : 0) << "lit " << lit << ", pixel " << i;
+            EXPECT_EQ(int(px.data[std::size_t(2 * i + 1)]), i == lit ? 64 : 0) << "lit " << lit << ", pixel " << i;
+        }
+    }
+}

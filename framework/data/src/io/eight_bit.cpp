@@ -1,5 +1,6 @@
 #include "eight_bit.h"
 
+#include "background_spans.h"
 #include "srgb_code.h"
 
 #include <darkroom/error.h>
@@ -7,7 +8,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace darkroom::io {
 
@@ -69,7 +72,7 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
     }
     const std::size_t pixels = image.pixelCount();
     const int n = out.channels;
-    out.data.resize(pixels * std::size_t(n));
+    out.data.resize(pixels * std::size_t(n));  // zeroed: spans of background are skipped below
     // Linear -> sRGB code value (round to nearest) by thresholds
     // (srgb_code.h), NaN -> 0; alpha is stored linearly. Rows in parallel,
     // one channel at a time along a row, so each loop reads one plane.
@@ -77,13 +80,23 @@ EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, cons
     const std::size_t w = std::size_t(image.width());
     tbb::parallel_for(0, image.height(), [&](int y) {
         unsigned char* row = out.data.data() + std::size_t(y) * w * std::size_t(n);
+        std::vector<std::uint8_t> background((w + kBackgroundSpan - 1) / kBackgroundSpan);
         for (int c = 0; c < n; ++c) {
             const float* s = src[std::size_t(c)] + std::size_t(y) * w;
             unsigned char* d = row + c;
-            if (out.alpha && c == n - 1)
-                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = encodeAlpha(s[x]);
-            else
-                for (std::size_t x = 0; x < w; ++x) d[x * std::size_t(n)] = encodeColour(srgb, s[x]);
+            const bool alpha = out.alpha && c == n - 1;
+            // A rendered picture is often mostly background (84 % of the
+            // pixels of a colour-mapped 2048² isosurface): its spans are left
+            // as `out.data` starts, zero.
+            markBackgroundSpans(s, w, background.data());
+            for (std::size_t x0 = 0; x0 < w; x0 += kBackgroundSpan) {
+                const std::size_t x1 = std::min(w, x0 + kBackgroundSpan);
+                if (background[x0 / kBackgroundSpan]) continue;
+                if (alpha)
+                    for (std::size_t x = x0; x < x1; ++x) d[x * std::size_t(n)] = encodeAlpha(s[x]);
+                else
+                    for (std::size_t x = x0; x < x1; ++x) d[x * std::size_t(n)] = encodeColour(srgb, s[x]);
+            }
         }
     });
     return out;

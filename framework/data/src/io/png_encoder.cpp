@@ -3,6 +3,8 @@
 // with zlib only.
 #include "png_encoder.h"
 
+#include "run_deflate.h"
+
 #include <darkroom/error.h>
 
 #include <libdeflate.h>
@@ -68,6 +70,12 @@ struct Bytes {
 Bytes deflate(const PngPixels& px, const PngEncoding& encoding) {
     Bytes filtered(filteredSize(px));
     filterRows(px, encoding.filter, filtered.data.get());
+    if (encoding.deflater == Deflater::Runs) {
+        const std::vector<unsigned char> runs = runDeflateZlib(filtered.data.get(), filtered.size, px.channels);
+        Bytes z(runs.size());
+        std::copy(runs.begin(), runs.end(), z.data.get());
+        return z;
+    }
     std::unique_ptr<libdeflate_compressor, CompressorDeleter> c(
         libdeflate_alloc_compressor(std::clamp(encoding.level, 0, 12)));
     if (!c) throw Error("not enough memory to encode it");

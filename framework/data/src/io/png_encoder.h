@@ -1,7 +1,8 @@
 #pragma once
 // An 8-bit PNG in memory: the rows filtered here, the whole filtered image
-// deflated at once by libdeflate (Debian's libdeflate-dev), which is faster
-// than zlib at every level for the same size (docs/performance.md, "Codecs").
+// deflated at once, by libdeflate (Debian's libdeflate-dev, faster than zlib
+// at every level for the same size) or by the run encoder (run_deflate.h),
+// which the writer uses (docs/performance.md, "Codecs").
 // Internal to the data library; the benchmark (bench/codecs) and the unit
 // tests compile it in to compare filters and levels.
 #include <cstddef>
@@ -13,9 +14,14 @@ namespace darkroom::io {
 // the filter with the least sum of absolute (signed) differences.
 enum class PngFilter { None, Sub, Up, Average, Paeth, Adaptive };
 
+// Which deflate encoder: libdeflate's at a level, or the run encoder
+// (run_deflate.h), which finds only repeats of the previous byte or pixel.
+enum class Deflater { Libdeflate, Runs };
+
 struct PngEncoding {
     PngFilter filter = PngFilter::Up;
-    int level = 1;  // libdeflate's level, 0 (stored) to 12
+    int level = 1;  // libdeflate's level, 0 (stored) to 12; unused by Runs
+    Deflater deflater = Deflater::Libdeflate;
 };
 
 struct PngPixels {

@@ -17,7 +17,7 @@ namespace {
 
 // Measured on colour-mapped 1024² and 2048² pictures (docs/performance.md,
 // "Codecs"): see there for the bytes against the time of each choice.
-constexpr PngEncoding chosenEncoding{PngFilter::Up, 1};
+constexpr PngEncoding chosenEncoding{PngFilter::Up, 1, Deflater::Runs};
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) {
     throw Error("cannot write image '" + path + "': " + why);
