@@ -1,9 +1,11 @@
-# libdeflate (Debian's libdeflate-dev): the PNG writer deflates with it,
-# faster than zlib for the same size (docs/performance.md, "Codecs"). Shared
-# by the main build, the benchmarks and the fuzz project.
+# libdeflate (Debian's libdeflate-dev): the PNG writer deflates with it and
+# the EXR reader inflates with it, faster than zlib either way
+# (docs/performance.md, "Codecs"). Shared by the main build, the benchmarks
+# and the fuzz project.
 #
 # Defines darkroom_deflate, an interface target with libdeflate's include
-# folder and library. Only png_encoder.cpp includes libdeflate.h.
+# folder and library. png_encoder.cpp deflates with it and exr_direct.cpp
+# inflates EXR's ZIP chunks with it (docs/performance.md, "EXR reading").
 if(TARGET darkroom_deflate)
   return()
 endif()
