@@ -112,10 +112,9 @@ bool decodeChunk(exr_const_context_t ctx, const Layout& layout, int chunk, Scrat
 
 }  // namespace
 
-bool readExrDirect(const std::string& path, const ExrWindow& window, WritableBuffer& buffer) {
-    if (buffer.width() != window.width || buffer.height() != window.height) return false;
+bool readExrDirect(const std::string& path, const Imf::Header& header, WritableBuffer& buffer) {
     const CoreFile file(path);
-    const std::optional<Layout> layout = exr_direct::directLayout(file, window, buffer);
+    const std::optional<Layout> layout = exr_direct::directLayout(file, header, buffer);
     if (!layout) return false;
     const exr_const_context_t ctx = file.context();
     // The first chunk's info on this thread: it loads the offset table

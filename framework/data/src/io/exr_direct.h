@@ -10,25 +10,27 @@
 // the C++ library for everything else.
 #include <darkroom/buffer.h>
 
+#include <ImfHeader.h>
+
 #include <string>
 
 namespace darkroom::io {
 
-// The data window as readExr lays it out: buffer pixel (0, 0) is the file's
-// pixel (x0, y0), rows top to bottom in increasing y, as OpenEXR's are.
-struct ExrWindow {
-    int x0 = 0, y0 = 0, width = 0, height = 0;
-};
-
 // Decodes the pixels of `path` into `buffer` and returns true when the file is
 // a single-part scan-line image, compressed with NONE, ZIPS or ZIP, whose
 // channels are UINT, HALF or FLOAT without subsampling, written in increasing
-// y, with `window` as its data window and exactly `buffer`'s channels (UINT in
-// UInt32 planes, HALF widened to float as OpenEXR widens it, FLOAT as stored).
-// Returns false for any other file and for anything inconsistent (a size,
-// an offset, a stream that does not inflate to exactly its size): the planes
-// then hold anything, and the caller reads with OpenEXR's C++ library, which
-// decodes every pixel again or words the error.
-bool readExrDirect(const std::string& path, const ExrWindow& window, WritableBuffer& buffer);
+// y, into a buffer laid out as readExr lays it out: the data window's size,
+// buffer pixel (0, 0) at the window's top-left corner, rows in increasing y,
+// one plane per file channel (UINT in UInt32, HALF widened to float as
+// OpenEXR widens it, FLOAT as stored). `header` is the header as OpenEXR's
+// C++ library read it, from which readExr sized the buffer; the Core API's
+// reading of the same header must agree with it on every point above (a
+// damaged header can read differently: a missing compression attribute is
+// ZIP to one and NONE to the other). Returns false for any other file and
+// for anything inconsistent (a size, an offset, a stream that does not
+// inflate to exactly its size): the planes then hold anything, and the caller
+// reads with the C++ library, which decodes every pixel again or words the
+// error.
+bool readExrDirect(const std::string& path, const Imf::Header& header, WritableBuffer& buffer);
 
 }  // namespace darkroom::io

@@ -37,8 +37,14 @@ struct ChannelTarget {
     std::uint8_t* plane;         // the buffer's plane (float or uint32), row 0
 };
 
+// The data window as readExr lays it out: buffer pixel (0, 0) is the file's
+// pixel (x0, y0).
+struct Window {
+    int x0 = 0, y0 = 0, width = 0, height = 0;
+};
+
 struct Layout {
-    ExrWindow window;
+    Window window;
     exr_compression_t compression;
     int linesPerChunk = 0;
     int chunks = 0;
@@ -46,8 +52,9 @@ struct Layout {
     std::vector<ChannelTarget> channels;
 };
 
-// The layout when the direct decoder can take the file (see readExrDirect),
+// The layout when the direct decoder can take the file and the Core API read
+// its header as OpenEXR's C++ library did (`header`; see readExrDirect),
 // nothing otherwise.
-std::optional<Layout> directLayout(const CoreFile& file, const ExrWindow& window, WritableBuffer& buffer);
+std::optional<Layout> directLayout(const CoreFile& file, const Imf::Header& header, WritableBuffer& buffer);
 
 }  // namespace darkroom::io::exr_direct

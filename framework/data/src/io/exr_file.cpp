@@ -218,14 +218,12 @@ std::shared_ptr<WritableBuffer> readExr(const std::string& path, ExrPixelPath pi
         // The files Darkroom writes (ZIP, FLOAT) decode several times faster
         // without the C++ library's sample-by-sample copy (exr_direct.h);
         // the rest, and whatever the direct decoder doubts, read on below.
-        const Imath::Box2i dw = header.dataWindow();
-        if (pixels == ExrPixelPath::DirectWhenPossible &&
-            readExrDirect(path, {dw.min.x, dw.min.y, size.width, size.height}, *buffer))
-            return buffer;
+        if (pixels == ExrPixelPath::DirectWhenPossible && readExrDirect(path, header, *buffer)) return buffer;
 
         // Slices point straight into the planes: OpenEXR decodes (and widens
         // half to float) into them, no interleaved copy in between. The base
         // pointer is that of pixel (0, 0) of the data window's coordinates.
+        const Imath::Box2i dw = header.dataWindow();
         const std::ptrdiff_t origin = std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * size.width;
         const std::size_t yStride = std::size_t(size.width) * 4;
         Imf::FrameBuffer fb;
