@@ -1,10 +1,12 @@
-# libdeflate (Debian's libdeflate-dev): the PNG writer deflates with it,
-# faster than zlib for the same size (docs/performance.md, "Codecs"). Shared
-# by the main build, the benchmarks and the fuzz project.
+# libdeflate (Debian's libdeflate-dev): the EXR reader inflates with it,
+# faster than zlib, and the PNG writer takes its CRC-32 and Adler-32
+# (docs/performance.md, "Codecs"). Shared by the main build, the benchmarks
+# and the fuzz project.
 #
 # Defines darkroom_deflate, an interface target with libdeflate's include
-# folder and library. png_encoder.cpp and run_deflate.cpp (for Adler-32)
-# include libdeflate.h.
+# folder and library. exr_direct.cpp inflates EXR's ZIP chunks with it
+# (docs/performance.md, "EXR reading"); png_encoder.cpp (libdeflate's levels,
+# kept for the benchmark) and run_deflate.cpp include it too.
 if(TARGET darkroom_deflate)
   return()
 endif()

@@ -93,10 +93,19 @@ int main(int argc, char** argv) {
     try {
         // EXR: float RGBA with a camera-free G-buffer channel, each compression.
         const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
-        for (const char* compression : {"none", "zip", "piz", "rle"}) {
+        for (const char* compression : {"none", "zip", "zips", "piz", "rle"}) {
             ImageWriteOptions o;
             o.compression = compression;
             io::writeExr(*gbuffer, (root / "exr" / (std::string(compression) + ".exr")).string(), o);
+        }
+        // For the direct decoder (framework/data/src/io/exr_direct.h): half
+        // channels, and three ZIP chunks of 16 lines, the last one short.
+        {
+            ImageWriteOptions o;
+            o.halfFloat = true;
+            io::writeExr(*gbuffer, (root / "exr" / "zip-half.exr").string(), o);
+            const auto tall = image(5, 37, {"Z", "height"});
+            io::writeExr(*tall, (root / "exr" / "zip-tall.exr").string(), ImageWriteOptions{});
         }
         // Found by the EXR harness: a string attribute declaring 1.9 GB
         // (framework/data/src/io/exr_attributes.h); kept as a seed.

@@ -19,7 +19,13 @@ namespace darkroom::io {
 // True when the file starts with OpenEXR's magic number.
 bool isExrFile(const std::string& path);
 
-std::shared_ptr<WritableBuffer> readExr(const std::string& path);
+// Which decoder reads the pixels: the direct one (exr_direct.h) where it can,
+// OpenEXR's C++ library for the rest; or the C++ library alone, which the
+// tests and the benchmark compare the direct decoder against.
+enum class ExrPixelPath { DirectWhenPossible, OpenExrOnly };
+
+std::shared_ptr<WritableBuffer> readExr(const std::string& path,
+                                        ExrPixelPath pixels = ExrPixelPath::DirectWhenPossible);
 ImageHeader readExrHeader(const std::string& path);
 void writeExr(const Buffer& image, const std::string& path, const ImageWriteOptions& options);
 
