@@ -44,6 +44,11 @@ void EvalWorker::submit(EvalJob job) {
     if (cancel) adapter_.cancel();
 }
 
+void EvalWorker::dropPending() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_.reset();  // a runPending already posted finds nothing
+}
+
 void EvalWorker::runPending() {
     EvalJob job;
     {

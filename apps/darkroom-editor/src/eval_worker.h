@@ -58,6 +58,10 @@ public:
     ~EvalWorker() override;
 
     void submit(EvalJob job);
+    // Forgets the job waiting (not the one running): a full frame of the
+    // same edit is on its way, and on two cores the preview would only take
+    // CPU from it.
+    void dropPending();
     // A job waits, runs, or its result has not been delivered yet.
     bool busy() const;
     EvaluatorAdapter& adapter() { return adapter_; }

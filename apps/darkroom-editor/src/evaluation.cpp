@@ -1,7 +1,10 @@
 #include "evaluation.h"
 
+#include <darkroom/core/shared_sources.h>
+
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace editor {
 namespace {
@@ -10,6 +13,7 @@ constexpr int kMaxLevel = 5;          // 1/32 of each side: 1024 px becomes 32
 constexpr double kBudgetShare = 0.8;  // aim below the budget: timings vary
 constexpr double kLatencyShare = 1.5; // a preview's frame on screen within 1.5 budgets of its edit
 constexpr std::size_t kLatencyFrames = 4;
+constexpr int kWarmFallbackMs = 500;  // the warm-up starts by then even if no frame was presented
 
 double median(std::vector<double> v) {
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -28,6 +32,12 @@ Evaluation::Evaluation(QObject* parent) : QObject(parent) {
     // A preview is never cancelled for a newer value (see the header); it
     // only stops when the editor closes.
     preview_ = new EvalWorker([](const EvalJob&) { return false; }, [](const EvalJob&) { return false; }, this);
+    // One read of the sources for both: the preview evaluator takes the
+    // full one's databases (and the other way round) instead of reading them
+    // again, so its warm-up after the first frame only downsamples.
+    const auto shared = std::make_shared<darkroom::SharedSources>();
+    full_->adapter().shareSources(shared);
+    preview_->adapter().shareSources(shared);
     connect(full_, &EvalWorker::done, this, &Evaluation::onDone);
     connect(preview_, &EvalWorker::done, this, &Evaluation::onDone);
     settleTimer_.setSingleShot(true);
@@ -113,6 +123,7 @@ void Evaluation::setInteracting(bool on) {
 }
 
 void Evaluation::framePresented(std::uint64_t generation, int level) {
+    if (level == 0 && warmDue_ != 0 && generation >= warmDue_) warmPreview();
     const auto it = requestedAt_.find(generation);
     if (it == requestedAt_.end()) return;
     const double ms = clock_.nsecsElapsed() / 1e6 - it->second;
@@ -137,17 +148,18 @@ void Evaluation::endDrag() {
 void Evaluation::settle() {
     if (latestSettled_ || !latest_.graph) return;
     latestSettled_ = true;
+    preview_->dropPending();
     EvalJob job = latest_;
     job.level = 0;
     full_->submit(job);
 }
 
-void Evaluation::warmPreview(const EvalResult& full) {
-    // Only where previews will be used: the frame was slower than the budget.
-    if (budget_ <= 0 || full.profile.seconds <= budget_ || full.generation != latest_.generation) return;
+void Evaluation::warmPreview() {
+    const std::uint64_t due = std::exchange(warmDue_, 0);
+    if (due == 0 || due != latest_.generation || !latestSettled_) return;  // an edit came first
     EvalJob job = latest_;
     // The size the next drag starts with, from what this frame cost.
-    level_ = chooseLevel(std::max(full.profile.seconds, 1e-3));
+    level_ = chooseLevel(std::max(warmSeconds_, 1e-3));
     job.level = level_;
     job.show = false;
     preview_->submit(job);
@@ -186,7 +198,14 @@ void Evaluation::onDone(const EvalResult& r) {
     shownGeneration_ = r.generation;
     shownLevel_ = r.level;
     emit finished(r);
-    if (r.level == 0 && r.error.isEmpty()) warmPreview(r);
+    // Only where previews will be used: the frame was slower than the budget.
+    if (r.level == 0 && r.error.isEmpty() && budget_ > 0 && r.profile.seconds > budget_ &&
+        r.generation == latest_.generation) {
+        warmDue_ = r.generation;
+        warmSeconds_ = r.profile.seconds;
+        // framePresented() starts it; this is for a view that never presents.
+        QTimer::singleShot(kWarmFallbackMs, this, &Evaluation::warmPreview);
+    }
 }
 
 }  // namespace editor

@@ -21,10 +21,14 @@
 //    that): the prediction is noisy on a loaded machine, and every new size
 //    resamples the sources, so trying finer sizes costs frames;
 //  - after a slow full-resolution frame the preview evaluator is warmed in
-//    the background (sources read and downsampled), so the first drag step
-//    does not wait for the sources to be read.
+//    the background (sources downsampled), once that frame is on screen, so
+//    the first drag step does not wait for the sources to be downsampled;
+//  - when the hand stops, a preview still waiting is dropped: the full
+//    frame of the same edit follows, and needs both cores.
 // Two workers, each with its own evaluator and cache: previews never evict
 // the full-resolution results, and a preview never waits behind a full run.
+// The sources' results are shared between the two (SharedSources): each
+// database is read once, by whichever evaluator needs it first.
 #include "eval_worker.h"
 
 #include <QElapsedTimer>
@@ -74,7 +78,7 @@ private:
     void settle();
     void onDone(const EvalResult& r);
     int chooseLevel(double predicted) const;
-    void warmPreview(const EvalResult& full);
+    void warmPreview();
     bool isSource(const darkroom::Graph& g, const QString& node) const;
     void endDrag();
 
@@ -95,6 +99,11 @@ private:
     std::vector<double> dragLatencies_;            // the whole drag's
     std::atomic<std::uint64_t> generation_{0};
     std::uint64_t shownGeneration_ = 0;
+    // A warm-up of the preview evaluator due once the full frame of this
+    // generation is on screen (0: none): started earlier it would take the
+    // CPU from the view's upload of that frame. `warmSeconds_`: its cost.
+    std::uint64_t warmDue_ = 0;
+    double warmSeconds_ = 0;
     int shownLevel_ = 0;
 };
 

@@ -55,6 +55,12 @@ void EvaluatorAdapter::setInputBase(const std::string& folder) {
     evaluator_->setOptions(o);  // clears the cache: relative paths now mean other files
 }
 
+void EvaluatorAdapter::shareSources(std::shared_ptr<darkroom::SharedSources> shared) {
+    darkroom::EvaluatorOptions o = evaluator_->options();
+    o.sharedSources = std::move(shared);
+    evaluator_->setOptions(o);
+}
+
 void EvaluatorAdapter::cancel() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (running_) *running_ = true;

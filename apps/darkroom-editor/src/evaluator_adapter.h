@@ -25,6 +25,7 @@
 namespace darkroom {
 class Evaluator;
 class Graph;
+class SharedSources;
 }  // namespace darkroom
 
 namespace editor {
@@ -58,6 +59,9 @@ public:
 
     // Relative paths in the graph resolve here (the pipeline's folder).
     void setInputBase(const std::string& folder);
+    // Source results (readers, captures) shared with other adapters' evaluators,
+    // so a database is read once for all of them. Before the first evaluation.
+    void shareSources(std::shared_ptr<darkroom::SharedSources> shared);
 
     // Evaluates node.port. `stale` (may be empty) is asked before the run and
     // whenever the evaluator reports progress; once it says true the run is

@@ -1,5 +1,6 @@
 #include "hashing.h"
 #include "node_runner.h"
+#include "shared_sources_impl.h"
 
 #include <darkroom/error.h>
 #include <darkroom/core/evaluator.h>
@@ -78,6 +79,14 @@ std::uint64_t valueKey(const Node& n, const PortList& ports, const Inputs& input
         h = mix(h, hashValue(it == inputs.end() || it->second.empty() ? in.defaultValue : it->second.front()));
     }
     return h;
+}
+
+// A node that reads no image (a reader, a capture): what it makes depends
+// only on its key and the files it read, so evaluators may share it.
+bool readsNoImage(const PortList& ports, const Inputs& inputs) {
+    for (const auto& in : ports.inputs)
+        if (in.type == PortType::Image && inputs.count(in.name)) return false;
+    return true;
 }
 
 const Buffer* imageAt(const Inputs& inputs, const std::string& port, int index) {
@@ -321,16 +330,21 @@ std::set<std::string> Evaluator::wouldRun(const Graph& g, const std::vector<std:
             if (it != states_.end() && it->second->filterType == n.type && !n.placeholder)
                 st = {it->second->valid, it->second->valueKey, it->second->reads, it->second->files};
         }
-        // The same test process() makes before it runs a node.
+        // The same tests process() makes before it runs a node: its own
+        // cache, then (a source) what another evaluator shares.
         bool same = st.valid && !upstreamRuns;
+        const bool mayShare = options_.sharedSources && !upstreamRuns && !n.placeholder;
         try {
-            if (same) {
+            if (same || mayShare) {
                 const Inputs inputs = gatherInputs(g, n, g.ports(n), states_, mutex_);
+                const std::uint64_t key = valueKey(n, g.ports(n), inputs, options_);
                 std::string reason;
-                same = cacheHolds(st, inputs, valueKey(n, g.ports(n), inputs, options_), reason);
+                same = same && cacheHolds(st, inputs, key, reason);
+                if (!same && mayShare && readsNoImage(g.ports(n), inputs))
+                    same = options_.sharedSources->impl_->holds(key);
             }
-        } catch (const Error&) {
-            same = false;  // an input it would read is not held: it runs
+        } catch (const std::exception&) {
+            same = false;  // an input it would read is not held here: it runs
         }
         if (!same) runs.insert(name);
     }
@@ -587,74 +601,26 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
     const PortList& ports = g.ports(n);
     Inputs inputs = gatherInputs(g, n, ports, states_, mutex_);
     const std::uint64_t key = valueKey(n, ports, inputs, options_);
+    const bool shareable = options_.sharedSources && readsNoImage(ports, inputs);
 
     NodeProfile profile;
-    profile.node = n.name;
-    profile.type = n.type;
     if (cacheHolds(st, inputs, key, profile.reason)) {
         auto [outputs, changed] = reassemble(st, inputs);
         profile.status = changed ? NodeProfile::Status::Reassembled : NodeProfile::Status::Cached;
         std::lock_guard<std::mutex> lock(mutex_);
         st.outputs = std::move(outputs);
         st.lastUsed = clock_;
+    } else if (shareable && adoptShared(key, st)) {
+        profile.status = NodeProfile::Status::Cached;
+        profile.reason = "shared: another evaluator holds its result";
     } else {
-        if (!st.filter || st.filterType != n.type) {
-            st.filter = g.registry().createFilter(n.type);
-            st.filterType = n.type;
-        }
-        NodeCall call;
-        call.filter = st.filter.get();
-        call.ports = &ports;
-        call.name = n.name;
-        call.type = n.type;
-        call.inputs = std::move(inputs);
-        call.inputBase = options_.inputBase;
-        call.outputDir = options_.outputDir;
-        call.registry = &g.registry();
-        call.cancel = &cancel;
-        call.upstreamInputs = [this, &g, &n] { return upstreamInputsOf(g, n.name, states_, mutex_); };
-        call.onWarning = [&](const std::string& m) {
-            if (!options_.onWarning) return;
-            Diagnostic d;
-            d.severity = Diagnostic::Severity::Warning;
-            d.where = nodeLabel(n.name, n.type);
-            d.message = m;
-            d.node = n.name;
-            options_.onWarning(d);
-        };
-        call.onProgress = [&](double f) {
-            if (!options_.onProgress || !progress_) return;
-            std::lock_guard<std::mutex> lock(progress_->mutex);
-            options_.onProgress((double(progress_->done) + f) / double(std::max<std::size_t>(1, progress_->total)),
-                                n.name);
-        };
-        // The previous entry is dropped first: its planes go back to the pool
-        // for this execution, except those kept for comparison.
-        std::map<std::string, Value> previous;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            previous = std::move(st.outputs);
-            st.valid = false;
-            st.outputs.clear();
-        }
-        beginSequenceOf(n, st);
-        NodeResult r = runNode(call);
-        keepUnchangedOutputs(r, previous);
-        profile.status = NodeProfile::Status::Ran;
-        profile.seconds = r.seconds;
-        profile.bytesAllocated = r.bytesAllocated;
-        std::lock_guard<std::mutex> lock(mutex_);
-        st.outputs = std::move(r.outputs);
-        st.origins = std::move(r.origins);
-        st.reads = std::move(r.reads);
-        st.files = std::move(r.files);
-        st.inputs = std::move(r.inputs);
-        st.valueKey = key;
-        st.valid = true;
-        st.lastUsed = clock_;
-        ++st.executions;
-        st.seconds = r.seconds;
+        std::string why = std::move(profile.reason);
+        profile = execute(g, n, st, std::move(inputs), key, cancel);
+        profile.reason = std::move(why);
+        if (shareable) publishShared(key, st);
     }
+    profile.node = n.name;
+    profile.type = n.type;
 
     std::lock_guard<std::mutex> lock(mutex_);
     profile_.push_back(std::move(profile));
@@ -664,6 +630,93 @@ void Evaluator::process(const Graph& g, const Node& n, NodeState& st, const std:
         if (options_.onProgress)
             options_.onProgress(double(progress_->done) / double(std::max<std::size_t>(1, progress_->total)), n.name);
     }
+}
+
+bool Evaluator::adoptShared(std::uint64_t key, NodeState& st) {
+    std::optional<SourceResult> found = options_.sharedSources->impl_->find(key);
+    if (!found) return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    st.outputs = std::move(found->outputs);
+    st.origins = std::move(found->origins);
+    st.reads.clear();  // a source reads no image
+    st.files = std::move(found->files);
+    st.inputs = std::move(found->inputs);
+    st.valueKey = key;
+    st.valid = true;
+    st.lastUsed = clock_;
+    return true;
+}
+
+void Evaluator::publishShared(std::uint64_t key, const NodeState& st) {
+    SourceResult r;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        r = {st.outputs, st.origins, st.files, st.inputs};
+    }
+    options_.sharedSources->impl_->store(key, r);
+}
+
+// Runs the node (its cached result no longer holds) and records the result.
+NodeProfile Evaluator::execute(const Graph& g, const Node& n, NodeState& st, Inputs inputs, std::uint64_t key,
+                               const std::atomic<bool>& cancel) {
+    if (!st.filter || st.filterType != n.type) {
+        st.filter = g.registry().createFilter(n.type);
+        st.filterType = n.type;
+    }
+    NodeCall call;
+    call.filter = st.filter.get();
+    call.ports = &g.ports(n);
+    call.name = n.name;
+    call.type = n.type;
+    call.inputs = std::move(inputs);
+    call.inputBase = options_.inputBase;
+    call.outputDir = options_.outputDir;
+    call.registry = &g.registry();
+    call.cancel = &cancel;
+    call.upstreamInputs = [this, &g, &n] { return upstreamInputsOf(g, n.name, states_, mutex_); };
+    call.onWarning = [&](const std::string& m) {
+        if (!options_.onWarning) return;
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.where = nodeLabel(n.name, n.type);
+        d.message = m;
+        d.node = n.name;
+        options_.onWarning(d);
+    };
+    call.onProgress = [&](double f) {
+        if (!options_.onProgress || !progress_) return;
+        std::lock_guard<std::mutex> lock(progress_->mutex);
+        options_.onProgress((double(progress_->done) + f) / double(std::max<std::size_t>(1, progress_->total)),
+                            n.name);
+    };
+    // The previous entry is dropped first: its planes go back to the pool
+    // for this execution, except those kept for comparison.
+    std::map<std::string, Value> previous;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        previous = std::move(st.outputs);
+        st.valid = false;
+        st.outputs.clear();
+    }
+    beginSequenceOf(n, st);
+    NodeResult r = runNode(call);
+    keepUnchangedOutputs(r, previous);
+    NodeProfile profile;
+    profile.status = NodeProfile::Status::Ran;
+    profile.seconds = r.seconds;
+    profile.bytesAllocated = r.bytesAllocated;
+    std::lock_guard<std::mutex> lock(mutex_);
+    st.outputs = std::move(r.outputs);
+    st.origins = std::move(r.origins);
+    st.reads = std::move(r.reads);
+    st.files = std::move(r.files);
+    st.inputs = std::move(r.inputs);
+    st.valueKey = key;
+    st.valid = true;
+    st.lastUsed = clock_;
+    ++st.executions;
+    st.seconds = r.seconds;
+    return profile;
 }
 
 }  // namespace darkroom

@@ -111,7 +111,7 @@ void Ssao::execute(Context& ctx) {
     }
 
     const int blurRadius = int(ctx.get(blurRadius_));
-    const Frame g = buildFrame(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
+    const Frame& g = frames_.get(*in, camera, ctx.get(useNormals_), blurRadius, ctx);
     ctx.progress(0.1);
     // Raw AO (and the blur's or the half resolution's intermediate) in
     // padded planes, whose padding reads as unoccluded: the blur reads past

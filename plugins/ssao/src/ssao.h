@@ -3,6 +3,7 @@
 #include <darkroom/filter.h>
 
 #include "ao_estimators.h"
+#include "frame_cache.h"
 
 namespace darkroom {
 
@@ -85,6 +86,7 @@ private:
                        "Use the input's world-space normals N.x/N.y/N.z when present instead of "
                        "reconstructing them from Z"};
     CameraSource camera_;  // the image's camera, or the image-space one (depth_input.h)
+    ssao::FrameCache frames_;  // the last execution's depth planes and normals
     ImageOut result_{"image", "The input channels plus AO in [0, 1] (1 = unoccluded; 1 on background)", {"AO"}};
 };
 

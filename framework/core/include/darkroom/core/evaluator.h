@@ -3,6 +3,7 @@
 #include <darkroom/export.h>
 #include <darkroom/filter.h>
 #include <darkroom/core/graph.h>
+#include <darkroom/core/shared_sources.h>
 
 #include <atomic>
 #include <cstdint>
@@ -31,6 +32,10 @@ struct EvaluatorOptions {
     // evaluation needs it any more, so a one-shot run holds only what is in
     // flight; the next evaluation recomputes everything.
     bool retainIntermediate = true;
+    // Source results shared with other evaluators (shared_sources.h): a
+    // node that reads no image takes another evaluator's outputs for the
+    // same key and unchanged files instead of running. Null: not shared.
+    std::shared_ptr<SharedSources> sharedSources;
 };
 
 // How one node fared in the last evaluation.
@@ -143,6 +148,10 @@ private:
     void evaluateWaves(const Graph& g, const std::vector<std::string>& targets, const std::atomic<bool>* cancel);
     void beginSequenceOf(const Node& n, NodeState& st);
     void process(const Graph& g, const Node& n, NodeState& st, const std::atomic<bool>& cancel);
+    NodeProfile execute(const Graph& g, const Node& n, NodeState& st, std::map<std::string, std::vector<Value>> inputs,
+                        std::uint64_t key, const std::atomic<bool>& cancel);
+    bool adoptShared(std::uint64_t key, NodeState& st);
+    void publishShared(std::uint64_t key, const NodeState& st);
     void enforceCap(const std::set<std::string>& targets);
     std::size_t cachedBytesLocked() const;
 
