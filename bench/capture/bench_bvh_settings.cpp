@@ -4,7 +4,11 @@
 // degrees. One setting per run, so that each peak is measured alone:
 //
 //   bench_bvh_settings --mesh PATH [--quality low|medium|high] [--compact]
-//                      [--size N] [--reps R] [--threads T] [--general-reader]
+//                      [--pieces P] [--size N] [--reps R] [--threads T]
+//                      [--general-reader]
+//
+// --pieces P: surfaces in Embree geometries of at most P triangles
+// (BvhSettings::piecePrimitives; 0, the default here: whole).
 //
 // It also reports how long reading the mesh took and the memory it peaked at
 // (--general-reader: a PLY through readPly's general reader instead of the
@@ -77,13 +81,14 @@ Options parse(int argc, char** argv) {
                                  : q == "medium" ? embree::BvhSettings::Quality::Medium
                                                  : embree::BvhSettings::Quality::High;
         } else if (a == "--compact") o.settings.compact = true;
+        else if (a == "--pieces") o.settings.piecePrimitives = std::size_t(std::atoll(v)), ++i;
         else if (a == "--general-reader") o.generalReader = true;
         else if (a == "--size") o.size = std::atoi(v), ++i;
         else if (a == "--reps") o.reps = std::max(1, std::atoi(v)), ++i;
         else if (a == "--threads") o.threads = std::atoi(v), ++i;
         else {
-            std::fprintf(stderr, "usage: %s --mesh PATH [--quality low|medium|high] [--compact] [--size N] "
-                                 "[--reps R] [--threads T] [--general-reader]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s --mesh PATH [--quality low|medium|high] [--compact] [--pieces P] "
+                                 "[--size N] [--reps R] [--threads T] [--general-reader]\n", argv[0]);
             std::exit(2);
         }
     }
@@ -149,9 +154,9 @@ int main(int argc, char** argv) {
         std::printf("READ read_s=%.2f read_peak_MB=%.0f rss_after_read_MB=%.0f rss_after_read_B_per_tri=%.1f\n", read,
                     readPeak / 1e6, base / 1e6, base / double(triangles));
         std::printf(
-            "RESULT quality=%s compact=%d triangles=%zu build_s=%.2f build_cpu_s=%.2f "
+            "RESULT quality=%s compact=%d pieces=%zu triangles=%zu build_s=%.2f build_cpu_s=%.2f "
             "build_peak_MB=%.0f bvh_MB=%.0f peak_B_per_tri=%.1f bvh_B_per_tri=%.1f trace_ms=%.1f\n",
-            q, int(opt.settings.compact), triangles, build, buildCpu, peak / 1e6, kept / 1e6, peak / double(triangles),
+            q, int(opt.settings.compact), opt.settings.piecePrimitives, triangles, build, buildCpu, peak / 1e6, kept / 1e6, peak / double(triangles),
             kept / double(triangles), trace[trace.size() / 2] * 1e3);
         return 0;
     } catch (const std::exception& e) {

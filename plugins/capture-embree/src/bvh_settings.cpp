@@ -11,7 +11,7 @@ BvhSettings bvhSettingsFor(std::size_t primitives, std::uint64_t availableBytes)
     if (primitives < kBigScenePrimitives) return {BvhSettings::Quality::High, false};
     // Big: the time to the first ray is the build's, and memory the limit.
     const double lowPeak = kLowCompactPeakBytes * double(primitives);
-    if (lowPeak <= 0.5 * double(availableBytes)) return {BvhSettings::Quality::Low, true};
+    if (lowPeak <= 0.5 * double(availableBytes)) return {BvhSettings::Quality::Low, true, kLowPiecePrimitives};
     return {BvhSettings::Quality::Medium, true};
 }
 

@@ -11,7 +11,12 @@
 // depths agree to kSameCrossing (relative; a few hundred float ulps, far
 // below any real distance between two sheets of one surface) are the same
 // crossing, and the one with the lower key stands for it. Embree may also
-// report a primitive twice (spatial splits); that is the same rule.
+// report a primitive twice (spatial splits); that is the same rule. A big
+// surface may be several Embree geometries (GeometryPiece): the rule asks
+// for the same object, not the same geometry, and the pieces' IDs keep the
+// order of (object, primitive).
+#include "embree_scene.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -36,8 +41,12 @@ inline bool before(const Crossing& a, const Crossing& b) {
     return before(a.t, a.geomID, a.primID, b.t, b.geomID, b.primID);
 }
 
-inline bool sameCrossing(float ta, unsigned ga, float tb, unsigned gb) {
-    return ga == gb && std::abs(ta - tb) <= kSameCrossing * std::max(std::abs(ta), std::abs(tb));
+// `objectA` and `objectB`: the objects of the two hits' geometries.
+inline bool sameCrossing(float ta, unsigned objectA, float tb, unsigned objectB) {
+    return objectA == objectB && std::abs(ta - tb) <= kSameCrossing * std::max(std::abs(ta), std::abs(tb));
 }
+
+// The object of geometry g: piece g's, or g itself without pieces.
+inline unsigned objectOf(const GeometryPiece* pieces, unsigned g) { return pieces ? pieces[g].object : g; }
 
 }  // namespace darkroom::embree

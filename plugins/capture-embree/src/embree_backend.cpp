@@ -58,10 +58,10 @@ public:
         const int tilesY = (camera.height + kTile - 1) / kTile;
         RTCScene scene = bvh.handle();
         if (request.layers > 1) {
-            renderLayers(scene, bvh, camera, request, rays, method, *buffer, ctx);
+            renderLayers(bvh, camera, request, rays, method, *buffer, ctx);
             return buffer;
         }
-        const GBufferWriter writer(bvh.objects(), request, *buffer);
+        const GBufferWriter writer(bvh.objects(), bvh.pieces(), request, *buffer);
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
             const FlushDenormals ftz;
             NearestHitContext ic(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
@@ -80,10 +80,10 @@ public:
 
     // Layered G-buffers (request.layers > 1): the tiles as renderTiles splits
     // them, each pixel's K nearest crossings written by one writer per layer.
-    static void renderLayers(RTCScene scene, const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
+    static void renderLayers(const SceneBvh& bvh, const Camera& camera, const CaptureRequest& request,
                              const PrimaryRays& rays, LayerMethod method, WritableBuffer& buffer, Context& ctx) {
         std::vector<GBufferWriter> writers;
-        for (int k = 0; k < request.layers; ++k) writers.emplace_back(bvh.objects(), request, buffer, k);
+        for (int k = 0; k < request.layers; ++k) writers.emplace_back(bvh.objects(), bvh.pieces(), request, buffer, k);
         const int tilesX = (camera.width + kTile - 1) / kTile;
         const int tilesY = (camera.height + kTile - 1) / kTile;
         ctx.parallelFor(0, tilesX * tilesY, 1, [&](int begin, int end) {
@@ -91,7 +91,7 @@ public:
             LayeredTileState state(writers);
             for (int tile = begin; tile < end; ++tile) {
                 if (ctx.cancelled()) break;
-                traceLayeredTile(scene, method, rays, writers, state, camera.width, camera.height,
+                traceLayeredTile(bvh, method, rays, writers, state, camera.width, camera.height,
                                  (tile % tilesX) * kTile, (tile / tilesX) * kTile);
             }
             finishRows();
@@ -108,7 +108,7 @@ public:
         const std::size_t n = checkBatch(rays, "trace");
         auto buffer = ctx.allocate(int(n), 1, GBufferWriter::channels(request));
         buffer->metadata().attributes["units.Z"] = "ray parameter";
-        const GBufferWriter writer(bvh_->objects(), request, *buffer);
+        const GBufferWriter writer(bvh_->objects(), bvh_->pieces(), request, *buffer);
         RTCScene scene = bvh_->handle();
         const int packets = int((n + 7) / 8);
         ctx.parallelFor(0, packets, kBatchPacketsPerTask, [&](int begin, int end) {

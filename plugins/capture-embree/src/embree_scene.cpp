@@ -188,50 +188,66 @@ void SceneBvh::create(std::optional<BvhSettings> settings) {
 }
 
 void SceneBvh::build() {
-    RTCDevice dev = device_->handle();
     for (std::size_t i = 0; i < objects_.size(); ++i) {
         const ObjectView& o = objects_[i];
-        if (o.primitiveCount == 0 || o.vertexCount == 0) continue;
-        RTCGeometry g = nullptr;
-        // Vertices are x, y, z(, radius) records: Embree reads them in place
-        // as FLOAT3 (triangles) or FLOAT4 (curves and spheres). Scene objects
-        // use 16-byte records, so the last one is the padding Embree's SSE
-        // loads need; 12-byte records (in situ triangles) must be followed
-        // by 4 readable bytes, which darkroom/insitu.h asks of its callers.
-        switch (o.representation) {
-            case Representation::Surface:
-                g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, o.vertices, 0,
-                                           o.vertexStride, o.vertexCount);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, o.indices, 0, 12,
-                                           o.primitiveCount);
-                break;
-            case Representation::Lines:
-                // Round curves: cones capped by spheres, i.e. true tubes
-                // rather than flat ribbons or tessellated cylinders.
-                g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0,
-                                           o.vertexStride, o.vertexCount);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, o.indices, 0, 4,
-                                           o.primitiveCount);
-                break;
-            case Representation::Points:
-                g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-                rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0,
-                                           o.vertexStride, o.vertexCount);
-                break;
-        }
-        device_->check("cannot set up " + objectName(o.name, i));
-        // Low: each geometry gets its own BVH from Embree's Morton builder
-        // (under a two-level scene), several times faster to build than SAH.
-        if (settings_.quality == BvhSettings::Quality::Low) rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_LOW);
-        rtcCommitGeometry(g);
-        rtcAttachGeometryByID(scene_, g, unsigned(i));
-        rtcReleaseGeometry(g);
-        device_->check("cannot add " + objectName(o.name, i));
+        const std::size_t piece = settings_.piecePrimitives;
+        const bool split = o.representation == Representation::Surface && piece > 0 && o.primitiveCount > piece;
+        std::size_t first = 0;
+        do {
+            const std::size_t count = split ? std::min(piece, o.primitiveCount - first) : o.primitiveCount;
+            pieces_.push_back({std::uint32_t(i), first});
+            attach(o, first, count);
+            first += count;
+        } while (first < o.primitiveCount);
     }
     rtcCommitScene(scene_);
     device_->check("cannot build the acceleration structure");
+}
+
+// Primitives [first, first + count) of `o` as the geometry of the last
+// piece (an object without primitives keeps its ID but gets no geometry).
+void SceneBvh::attach(const ObjectView& o, std::size_t first, std::size_t count) {
+    if (count == 0 || o.vertexCount == 0) return;
+    const unsigned id = unsigned(pieces_.size() - 1);
+    RTCDevice dev = device_->handle();
+    RTCGeometry g = nullptr;
+    // Vertices are x, y, z(, radius) records: Embree reads them in place
+    // as FLOAT3 (triangles) or FLOAT4 (curves and spheres). Scene objects
+    // use 16-byte records, so the last one is the padding Embree's SSE
+    // loads need; 12-byte records (in situ triangles) must be followed
+    // by 4 readable bytes, which darkroom/insitu.h asks of its callers.
+    // A piece shares all the vertices and its run of the indices.
+    switch (o.representation) {
+        case Representation::Surface:
+            g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, o.vertices, 0, o.vertexStride,
+                                       o.vertexCount);
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, o.indices, 12 * first, 12,
+                                       count);
+            break;
+        case Representation::Lines:
+            // Round curves: cones capped by spheres, i.e. true tubes
+            // rather than flat ribbons or tessellated cylinders.
+            g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0, o.vertexStride,
+                                       o.vertexCount);
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, o.indices, 0, 4, count);
+            break;
+        case Representation::Points:
+            g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+            rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, o.vertices, 0, o.vertexStride,
+                                       o.vertexCount);
+            break;
+    }
+    const std::string name = objectName(o.name, pieces_.back().object);
+    device_->check("cannot set up " + name);
+    // Low: each geometry gets its own BVH from Embree's Morton builder
+    // (under a two-level scene), several times faster to build than SAH.
+    if (settings_.quality == BvhSettings::Quality::Low) rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_LOW);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(scene_, g, id);
+    rtcReleaseGeometry(g);
+    device_->check("cannot add " + name);
 }
 
 SceneBvh::~SceneBvh() {

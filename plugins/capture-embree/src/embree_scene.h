@@ -77,7 +77,18 @@ struct ObjectView {
 // vertex normals (darkroom/scene/vertex_normals.h), not fields.
 ObjectView viewOf(const SceneObject& object);
 
-// The acceleration structure of one scene. Geometry ID i is object i.
+// What one Embree geometry holds: an object's primitives from
+// `firstPrimitive` on (all of them unless the object was split in pieces,
+// BvhSettings::piecePrimitives). Pieces are numbered in object order and,
+// within an object, in primitive order, so ordering hits by (geometry ID,
+// Embree's primitive ID) orders them by (object, primitive) as well.
+struct GeometryPiece {
+    std::uint32_t object = 0;
+    std::size_t firstPrimitive = 0;
+};
+
+// The acceleration structure of one scene. Geometry ID g is piece g of
+// pieces(): object g itself unless an object was split.
 // Vertex and index arrays are shared with Embree, not copied, so their owner
 // is kept alive here for as long as the BVH exists.
 class SceneBvh {
@@ -98,15 +109,19 @@ public:
     RTCSceneTy* handle() const { return scene_; }
     const std::vector<ObjectView>& objects() const { return objects_; }
     const BvhSettings& settings() const { return settings_; }
+    // Indexed by Embree's geometry ID.
+    const std::vector<GeometryPiece>& pieces() const { return pieces_; }
 
 private:
     void create(std::optional<BvhSettings> settings);
     void build();
+    void attach(const ObjectView& o, std::size_t first, std::size_t count);
     std::shared_ptr<Device> device_;
     std::vector<ObjectView> objects_;
     std::shared_ptr<const void> owner_;
     RTCSceneTy* scene_ = nullptr;
     BvhSettings settings_;
+    std::vector<GeometryPiece> pieces_;
 };
 
 // Primitives Embree sees for an object (triangles, segments or spheres).

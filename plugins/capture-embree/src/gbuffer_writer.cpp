@@ -43,22 +43,32 @@ std::vector<ChannelDesc> GBufferWriter::channels(const CaptureRequest& request) 
     return out;
 }
 
-GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request,
-                             WritableBuffer& buffer, int layer) {
+GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const std::vector<GeometryPiece>& pieces,
+                             const CaptureRequest& request, WritableBuffer& buffer, int layer) {
     auto name = [layer](const std::string& n) { return layers::channel(n, layer); };
-    for (const auto& o : objects) {
-        objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices, o.primitiveCell,
-                            {o.normals[0], o.normals[1], o.normals[2]}});
+    std::vector<GeometryPiece> whole;
+    for (std::size_t i = 0; pieces.empty() && i < objects.size(); ++i) whole.push_back({std::uint32_t(i), 0});
+    const std::vector<GeometryPiece>& geometries = pieces.empty() ? whole : pieces;
+    for (const GeometryPiece& g : geometries) {
+        const ObjectView& o = objects[g.object];
+        const std::size_t first = g.firstPrimitive;
+        const std::size_t indicesPer = o.representation == Representation::Surface ? 3 : 1;
+        objects_.push_back({o.representation, o.vertices, o.vertexStride, o.indices ? o.indices + indicesPer * first : nullptr,
+                            o.primitiveCell ? o.primitiveCell + first : nullptr,
+                            {o.normals[0], o.normals[1], o.normals[2]}, g.object, std::uint32_t(first)});
+        pieces_ = pieces_ || first > 0 || g.object != objects_.size() - 1;
         hasPoints_ = hasPoints_ || o.representation == Representation::Points;
         hasSmooth_ = hasSmooth_ || (request.normals && o.normals[0]);
     }
     z_ = buffer.writeFloat(name("Z"));
     for (const auto& scalar : request.scalars) {
         scalars_.push_back(buffer.writeFloat(name(scalar)));
-        for (const auto& o : objects) {
+        for (const GeometryPiece& g : geometries) {
             FieldRef ref;
-            if (const FieldView* f = o.field(scalar)) {
-                ref.values = f->values;
+            if (const FieldView* f = objects[g.object].field(scalar)) {
+                // A cell field without a cell map is indexed by primitive.
+                const bool byPrimitive = f->cell && !objects[g.object].primitiveCell;
+                ref.values = f->values + (byPrimitive ? g.firstPrimitive : 0);
                 ref.cell = f->cell;
             }
             fields_.push_back(ref);
@@ -71,6 +81,16 @@ GBufferWriter::GBufferWriter(const std::vector<ObjectView>& objects, const Captu
     }
     if (request.objectId) objectId_ = buffer.writeUInt(name("objectId"));
     if (request.primitiveId) primitiveId_ = buffer.writeUInt(name("primitiveId"));
+}
+
+void GBufferWriter::pieceIds(const PacketHits& p, const int* cell, TileBuffer& tile) const {
+    for (int k = 0; k < p.lanes; ++k) {
+        if (!p.valid[k] || p.geomID[k] == kMissID) continue;
+        const ObjectRef& o = objects_[p.geomID[k]];
+        const std::size_t c = std::size_t(cell[k]);
+        if (objectId_) tile.objectId()[c] = o.object;
+        if (primitiveId_) tile.primitiveId()[c] = o.firstPrimitive + p.primID[k];
+    }
 }
 
 void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& tile) const {
@@ -91,6 +111,7 @@ void GBufferWriter::packet(const PacketHits& p, const int* cell, TileBuffer& til
     if (n_[0])
         for (std::size_t a = 0; a < 3; ++a) t.normal[a] = tile.channel(1 + nScalars + a) + cell[0];
     writePacketRows(p, t);
+    if (pieces_ && (objectId_ || primitiveId_)) pieceIds(p, cell, tile);
     if (nScalars == 0 && !hasPoints_ && !hasSmooth_) return;
     const std::size_t nObjects = objects_.size();
     for (int k = 0; k < p.lanes; ++k) {

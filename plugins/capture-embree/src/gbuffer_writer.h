@@ -73,9 +73,10 @@ public:
     static std::vector<ChannelDesc> channels(const CaptureRequest& request);
 
     // `buffer` must have been allocated with channels(request); the writer
-    // fills layer `layer`'s channels.
-    GBufferWriter(const std::vector<ObjectView>& objects, const CaptureRequest& request, WritableBuffer& buffer,
-                  int layer = 0);
+    // fills layer `layer`'s channels. Hits name their geometry: piece g of
+    // `pieces` (SceneBvh::pieces()); empty: geometry i is object i.
+    GBufferWriter(const std::vector<ObjectView>& objects, const std::vector<GeometryPiece>& pieces,
+                  const CaptureRequest& request, WritableBuffer& buffer, int layer = 0);
 
     static constexpr unsigned kMissID = 0xFFFFFFFFu;  // RTC_INVALID_GEOMETRY_ID
 
@@ -152,8 +153,8 @@ public:
             n_[1][pixel] = n[1];
             n_[2][pixel] = n[2];
         }
-        if (objectId_) objectId_[pixel] = h.geomID;
-        if (primitiveId_) primitiveId_[pixel] = h.primID;
+        if (objectId_) objectId_[pixel] = o.object;
+        if (primitiveId_) primitiveId_[pixel] = o.firstPrimitive + h.primID;
     }
 
 private:
@@ -170,6 +171,8 @@ private:
         n[2] = nz * k;
     }
 
+    // One geometry (an object, or a piece of one): its arrays start at its
+    // first primitive, so that Embree's primitive ID indexes them directly.
     struct ObjectRef {
         Representation representation;
         const float* vertices;  // x, y, z, radius records
@@ -177,6 +180,8 @@ private:
         const std::uint32_t* indices;
         const std::uint32_t* primitiveCell;  // nullptr: primitive i is cell i
         const float* normals[3];             // vertex normals (surfaces), or nullptr
+        std::uint32_t object;                // the ids the G-buffer stores
+        std::uint32_t firstPrimitive;
         const float* vertex(unsigned i) const {
             return reinterpret_cast<const float*>(reinterpret_cast<const char*>(vertices) + i * stride);
         }
@@ -238,10 +243,14 @@ private:
     // they cancel out.
     static void smoothNormal(const ObjectRef& o, const SurfaceHit& h, const float dir[3], float n[3]);
 
-    std::vector<ObjectRef> objects_;
+    // The ids writePacketRows stored (Embree's) made the object's own.
+    void pieceIds(const PacketHits& p, const int* cell, TileBuffer& tile) const;
+
+    std::vector<ObjectRef> objects_;  // per geometry
+    bool pieces_ = false;             // some object is split: geometry IDs are not object ids
     bool hasPoints_ = false;  // sphere hits have their depth refined
     bool hasSmooth_ = false;  // some object's normals are interpolated (and normals are stored)
-    std::vector<FieldRef> fields_;  // [scalar * objects + object]
+    std::vector<FieldRef> fields_;  // [scalar * geometries + geometry]
     float* z_ = nullptr;
     std::vector<float*> scalars_;
     float* n_[3] = {nullptr, nullptr, nullptr};

@@ -20,10 +20,12 @@ namespace darkroom::embree {
 struct KNearestContext {
     RTCIntersectContext context;  // first member: Embree is handed &context
     int k;
+    const GeometryPiece* pieces;  // SceneBvh::pieces(), or nullptr: geometry i is object i
     int count[8];
     Crossing hits[8][CaptureRequest::kMaxLayers];  // per lane, nearest first
 
-    KNearestContext(RTCIntersectContextFlags flags, int layers) : k(layers) {
+    KNearestContext(RTCIntersectContextFlags flags, int layers, const GeometryPiece* pieces)
+        : k(layers), pieces(pieces) {
         rtcInitIntersectContext(&context);
         context.flags = flags;
         context.filter = &filter;
@@ -39,7 +41,7 @@ struct KNearestContext {
         Crossing* list = hits[lane];
         int& n = count[lane];
         for (int i = 0; i < n; ++i) {
-            if (!sameCrossing(list[i].t, list[i].geomID, c.t, c.geomID)) continue;
+            if (!sameCrossing(list[i].t, objectOf(pieces, list[i].geomID), c.t, objectOf(pieces, c.geomID))) continue;
             if (!before(c, list[i])) return false;  // the crossing is already kept by a lower key
             for (int j = i; j + 1 < n; ++j) list[j] = list[j + 1];  // c replaces it below
             --n;
@@ -76,10 +78,11 @@ struct KNearestContext {
 // prev itself and every hit that is the same crossing as prev.
 struct NextCrossingContext {
     RTCIntersectContext context;
+    const GeometryPiece* pieces;
     float prevT[8], t[8];
     unsigned prevGeom[8], prevPrim[8], geomID[8], primID[8];
 
-    explicit NextCrossingContext(RTCIntersectContextFlags flags) {
+    NextCrossingContext(RTCIntersectContextFlags flags, const GeometryPiece* pieces) : pieces(pieces) {
         rtcInitIntersectContext(&context);
         context.flags = flags;
         context.filter = &filter;
@@ -101,7 +104,8 @@ struct NextCrossingContext {
             const float t = RTCRayN_tfar(args->ray, args->N, i);
             const unsigned g = RTCHitN_geomID(args->hit, args->N, i), p = RTCHitN_primID(args->hit, args->N, i);
             const bool next = before(self->prevT[lane], self->prevGeom[lane], self->prevPrim[lane], t, g, p) &&
-                              !sameCrossing(self->prevT[lane], self->prevGeom[lane], t, g);
+                              !sameCrossing(self->prevT[lane], objectOf(self->pieces, self->prevGeom[lane]), t,
+                                            objectOf(self->pieces, g));
             if (!next || !before(t, g, p, self->t[lane], self->geomID[lane], self->primID[lane])) {
                 args->valid[i] = 0;
                 continue;

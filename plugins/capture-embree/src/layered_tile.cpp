@@ -108,13 +108,15 @@ LayeredTileState::LayeredTileState(const std::vector<GBufferWriter>& writers) {
     for (const auto& w : writers) tiles.push_back(w.tileBuffer());
 }
 
-void traceLayeredTile(RTCSceneTy* scene, LayerMethod method, const PrimaryRays& rays,
+void traceLayeredTile(const SceneBvh& bvh, LayerMethod method, const PrimaryRays& rays,
                       const std::vector<GBufferWriter>& writers, LayeredTileState& state, int width, int height,
                       int x0, int y0) {
     const int count = int(writers.size());
-    KNearestContext nearestK(RTC_INTERSECT_CONTEXT_FLAG_COHERENT, count);
+    RTCScene scene = bvh.handle();
+    const GeometryPiece* pieces = bvh.pieces().data();
+    KNearestContext nearestK(RTC_INTERSECT_CONTEXT_FLAG_COHERENT, count, pieces);
     NearestHitContext first(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
-    NextCrossingContext next(RTC_INTERSECT_CONTEXT_FLAG_COHERENT);
+    NextCrossingContext next(RTC_INTERSECT_CONTEXT_FLAG_COHERENT, pieces);
     Packet p;
     LayerLanes layers[CaptureRequest::kMaxLayers];
     const int x1 = std::min(x0 + TileBuffer::kSize, width), y1 = std::min(y0 + TileBuffer::kSize, height);

@@ -5,12 +5,11 @@
 // channels (darkroom/layers.h). Layer 0 is what a one-layer capture gives,
 // bit for bit.
 #include "embree_backend.h"
+#include "embree_scene.h"
 #include "gbuffer_writer.h"
 #include "primary_rays.h"
 
 #include <vector>
-
-struct RTCSceneTy;
 
 namespace darkroom::embree {
 
@@ -29,7 +28,7 @@ struct LayeredTileState {
 // `writers[k]` writes layer k; (x0, y0) is the tile's corner; tiles are
 // TileBuffer::kSize square, traced in 4x2 packets as the one-layer capture
 // traces them.
-void traceLayeredTile(RTCSceneTy* scene, LayerMethod method, const PrimaryRays& rays,
+void traceLayeredTile(const SceneBvh& bvh, LayerMethod method, const PrimaryRays& rays,
                       const std::vector<GBufferWriter>& writers, LayeredTileState& state, int width, int height,
                       int x0, int y0);
 
