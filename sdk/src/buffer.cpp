@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <new>
 #include <string_view>
 #include <unordered_map>
@@ -59,13 +61,68 @@ void* mapHugePages(std::size_t bytes, std::size_t& mapped) {
 #endif
 }
 
+// Mappings of released planes kept for the next plane of the same mapped
+// size: a reader called once per --foreach entry (EXR, PNG planes) would
+// otherwise map fresh memory each time, and the kernel's faults, zeroing and
+// unmapping of it took a fifth of a colour-mapping batch's CPU (perf,
+// docs/performance.md "Batch shading"). Bounded: what exceeds kIdleCap is
+// unmapped. (Host contexts allocate from the framework's plane pool
+// instead; this serves code that has no context, such as the readers.)
+// A comparator of this file's own: the map's code then stays internal to the
+// SDK instead of exporting std::multimap instantiations (the ABI check).
+struct MappedSizeLess {
+    bool operator()(std::size_t a, std::size_t b) const { return a < b; }
+};
+
+class MappingRecycler {
+public:
+    static MappingRecycler& shared() {
+        static MappingRecycler* r = new MappingRecycler();  // never destroyed: planes may outlive statics
+        return *r;
+    }
+    void* take(std::size_t mapped) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        const auto it = idle_.find(mapped);
+        if (it == idle_.end()) return nullptr;
+        void* p = it->second;
+        idle_.erase(it);
+        idleBytes_ -= mapped;
+        return p;
+    }
+    void release(void* p, std::size_t mapped) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (idleBytes_ + mapped <= kIdleCap) {
+                idle_.emplace(mapped, p);
+                idleBytes_ += mapped;
+                return;
+            }
+        }
+        ::munmap(p, mapped);
+    }
+
+private:
+    static constexpr std::size_t kIdleCap = std::size_t(256) << 20;
+    std::mutex mutex_;
+    std::multimap<std::size_t, void*, MappedSizeLess> idle_;
+    std::size_t idleBytes_ = 0;
+};
+
 }  // namespace
 
 std::shared_ptr<HostPlane> newHostPlane(std::size_t pixels, bool zero) {
     const std::size_t bytes = std::max<std::size_t>(pixels, 1) * 4;
     std::size_t mapped = 0;
-    if (void* h = mapHugePages(bytes, mapped))
-        return std::make_shared<HostPlane>(h, pixels, [mapped](void* s) { ::munmap(s, mapped); });
+    void* h = nullptr;
+    if (bytes >= kHugePage) {
+        mapped = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        h = MappingRecycler::shared().take(mapped);
+        if (h && zero) std::memset(h, 0, bytes);  // fresh mappings come zeroed; recycled ones do not
+    }
+    if (!h) h = mapHugePages(bytes, mapped);
+    if (h)
+        return std::make_shared<HostPlane>(h, pixels,
+                                           [mapped](void* s) { MappingRecycler::shared().release(s, mapped); });
     void* p = zero ? std::calloc(bytes, 1) : std::malloc(bytes);
     if (!p) throw std::bad_alloc();
     return std::make_shared<HostPlane>(p, pixels, [](void* s) { std::free(s); });

@@ -4,6 +4,7 @@
 // RGB and RGBA; the chunks are those libpng wrote before (IHDR, gAMA, sRGB,
 // cHRM with the same bytes, IDAT, IEND); a large image spans several IDATs.
 #include "png_encoder.h"
+#include "png_up_filter.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -138,4 +139,23 @@ TEST(PngEncoder, LargeImageSpansSeveralIdatChunks) {
     for (const auto& c : chunksOf(png)) idats += c.type == "IDAT";
     EXPECT_EQ(idats, 4);
     EXPECT_EQ(decode(png, 4), px);
+}
+
+// The writer filters in place (png_up_filter.h: bands of 32 rows in
+// parallel, SIMD with a scalar tail): the same bytes as filterRows' "up",
+// across band edges and at widths that leave tails.
+TEST(PngEncoder, UpFilterInPlaceMatchesFilterRows) {
+    for (int channels : {1, 3, 4})
+        for (int w : {1, 7, 33, 100})
+            for (int h : {1, 31, 32, 33, 65, 97}) {
+                const auto px = picture(w, h, channels);
+                const PngPixels pixels{w, h, channels, px.data()};
+                std::vector<unsigned char> expected(filteredSize(pixels)), inPlace(filteredSize(pixels));
+                filterRows(pixels, PngFilter::Up, expected.data());
+                const std::size_t rowBytes = std::size_t(w) * std::size_t(channels) + 1;
+                for (int y = 0; y < h; ++y)
+                    std::copy_n(px.data() + std::size_t(y) * (rowBytes - 1), rowBytes - 1, inPlace.data() + std::size_t(y) * rowBytes + 1);
+                filterUpInPlace(inPlace.data(), rowBytes, h);
+                EXPECT_EQ(inPlace, expected) << channels << " channels, " << w << "x" << h;
+            }
 }

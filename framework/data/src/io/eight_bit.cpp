@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace darkroom::io {
@@ -54,51 +55,75 @@ inline unsigned char encodeColour(const SrgbCodeTable& srgb, float v) {
 
 }  // namespace
 
-EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+EightBitSource chooseEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
                               bool alphaAllowed) {
     std::vector<std::string> names = options.channels.empty() ? defaultChannels(image, path) : options.channels;
     if (names.empty() || names.size() > 4)
         fail(path, "an 8-bit image takes 1 to 4 channels (grey, grey+alpha, RGB, RGBA), not " +
                        std::to_string(names.size()));
     if (!alphaAllowed && (names.size() == 2 || names.size() == 4)) names.pop_back();
-    EightBitPixels out;
+    EightBitSource out;
+    out.width = image.width();
+    out.height = image.height();
     out.channels = int(names.size());
     out.alpha = out.channels == 2 || out.channels == 4;
-    std::vector<const float*> src;
     for (const auto& name : names) {
         const float* p = image.hostFloat(name);
         if (!p) fail(path, "channel '" + name + "' is not a float32 channel of the image; it has " + channelListText(image, true));
-        src.push_back(p);
+        out.planes.push_back(p);
     }
-    const std::size_t pixels = image.pixelCount();
-    const int n = out.channels;
-    out.data.resize(pixels * std::size_t(n));  // zeroed: spans of background are skipped below
+    return out;
+}
+
+void encodeEightBitRows(const EightBitSource& src, unsigned char* rows, std::size_t rowBytes) {
     // Linear -> sRGB code value (round to nearest) by thresholds
     // (srgb_code.h), NaN -> 0; alpha is stored linearly. Rows in parallel,
     // one channel at a time along a row, so each loop reads one plane.
     const SrgbCodeTable& srgb = srgbCodeTable();
-    const std::size_t w = std::size_t(image.width());
-    tbb::parallel_for(0, image.height(), [&](int y) {
-        unsigned char* row = out.data.data() + std::size_t(y) * w * std::size_t(n);
-        std::vector<std::uint8_t> background((w + kBackgroundSpan - 1) / kBackgroundSpan);
-        for (int c = 0; c < n; ++c) {
-            const float* s = src[std::size_t(c)] + std::size_t(y) * w;
+    const std::size_t w = std::size_t(src.width), n = std::size_t(src.channels);
+    const std::size_t spans = (w + kBackgroundSpan - 1) / kBackgroundSpan;
+    tbb::parallel_for(0, src.height, [&](int y) {
+        unsigned char* row = rows + std::size_t(y) * rowBytes;
+        // A rendered picture is often mostly background (84 % of the pixels
+        // of a colour-mapped 2048² isosurface): spans found by SIMD to hold
+        // nothing above zero in a channel give that channel code 0 without a
+        // look at each value, and spans that are background in every channel
+        // are cleared at once.
+        std::vector<std::uint8_t> background(spans * n), everywhere(spans, 1);
+        for (std::size_t c = 0; c < n; ++c) {
+            markBackgroundSpans(src.planes[c] + std::size_t(y) * w, w, background.data() + c * spans);
+            for (std::size_t k = 0; k < spans; ++k) everywhere[k] &= background[c * spans + k];
+        }
+        for (std::size_t k = 0; k < spans; ++k)
+            if (everywhere[k])
+                std::memset(row + k * kBackgroundSpan * n, 0, (std::min(w, (k + 1) * kBackgroundSpan) - k * kBackgroundSpan) * n);
+        for (std::size_t c = 0; c < n; ++c) {
+            const float* s = src.planes[c] + std::size_t(y) * w;
             unsigned char* d = row + c;
-            const bool alpha = out.alpha && c == n - 1;
-            // A rendered picture is often mostly background (84 % of the
-            // pixels of a colour-mapped 2048² isosurface): its spans are left
-            // as `out.data` starts, zero.
-            markBackgroundSpans(s, w, background.data());
-            for (std::size_t x0 = 0; x0 < w; x0 += kBackgroundSpan) {
-                const std::size_t x1 = std::min(w, x0 + kBackgroundSpan);
-                if (background[x0 / kBackgroundSpan]) continue;
-                if (alpha)
-                    for (std::size_t x = x0; x < x1; ++x) d[x * std::size_t(n)] = encodeAlpha(s[x]);
+            const bool alpha = src.alpha && c == n - 1;
+            for (std::size_t k = 0; k < spans; ++k) {
+                if (everywhere[k]) continue;
+                const std::size_t x0 = k * kBackgroundSpan, x1 = std::min(w, x0 + kBackgroundSpan);
+                if (background[c * spans + k])
+                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = 0;
+                else if (alpha)
+                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = encodeAlpha(s[x]);
                 else
-                    for (std::size_t x = x0; x < x1; ++x) d[x * std::size_t(n)] = encodeColour(srgb, s[x]);
+                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = encodeColour(srgb, s[x]);
             }
         }
     });
+}
+
+EightBitPixels encodeEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+                              bool alphaAllowed) {
+    const EightBitSource src = chooseEightBit(image, path, options, alphaAllowed);
+    EightBitPixels out;
+    out.channels = src.channels;
+    out.alpha = src.alpha;
+    const std::size_t rowBytes = std::size_t(src.width) * std::size_t(src.channels);
+    out.data.resize(rowBytes * std::size_t(src.height));
+    encodeEightBitRows(src, out.data.data(), rowBytes);
     return out;
 }
 

@@ -16,6 +16,22 @@ struct EightBitPixels {
     std::vector<unsigned char> data;  // interleaved, rows top to bottom
 };
 
+// The channels an 8-bit file takes from `image` (1 grey, 2 grey+alpha, 3 RGB,
+// 4 RGBA), chosen by image_io.h's rules or named in `options`.
+struct EightBitSource {
+    int width = 0, height = 0;
+    int channels = 0;
+    bool alpha = false;
+    std::vector<const float*> planes;  // one per channel, in file order
+};
+EightBitSource chooseEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
+                              bool alphaAllowed);
+
+// Their interleaved 8-bit codes, row y at rows + y * rowBytes (every byte of
+// the width * channels written), so that a PNG writer can encode straight
+// into its filter rows.
+void encodeEightBitRows(const EightBitSource& source, unsigned char* rows, std::size_t rowBytes);
+
 // `alphaAllowed`: false for formats without alpha (JPEG), which then get grey
 // or RGB. Throws darkroom::Error naming `path` when the channels cannot be
 // chosen or are not float32.

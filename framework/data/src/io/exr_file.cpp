@@ -213,7 +213,11 @@ std::shared_ptr<WritableBuffer> readExr(const std::string& path, ExrPixelPath pi
                    path, std::to_string(channels.size()) + " channels");
         std::vector<ChannelDesc> desc;
         for (const auto& c : channels) desc.push_back({c.name, bufferType(c.type)});
-        auto buffer = makeCpuBuffer(size.width, size.height, desc);
+        // Planes not zeroed: either path below writes every pixel (the
+        // buffer is the data window), and a --foreach batch reads one file
+        // per entry into planes recycled from the last (newHostPlane).
+        auto buffer = makeHostBuffer(size.width, size.height);
+        for (const auto& d : desc) buffer->setPlane(d, newHostPlane(buffer->pixelCount(), false));
         buffer->metadata() = std::move(meta);
         // The files Darkroom writes (ZIP, FLOAT) decode several times faster
         // without the C++ library's sample-by-sample copy (exr_direct.h);

@@ -67,11 +67,10 @@ struct Bytes {
     explicit Bytes(std::size_t n) : data(new unsigned char[n]), size(n) {}
 };
 
-Bytes deflate(const PngPixels& px, const PngEncoding& encoding) {
-    Bytes filtered(filteredSize(px));
-    filterRows(px, encoding.filter, filtered.data.get());
+// The zlib stream of rows already filtered.
+Bytes deflate(const unsigned char* filtered, std::size_t size, int channels, const PngEncoding& encoding) {
     if (encoding.deflater == Deflater::Runs) {
-        const std::vector<unsigned char> runs = runDeflateZlib(filtered.data.get(), filtered.size, px.channels);
+        const std::vector<unsigned char> runs = runDeflateZlib(filtered, size, channels);
         Bytes z(runs.size());
         std::copy(runs.begin(), runs.end(), z.data.get());
         return z;
@@ -79,17 +78,18 @@ Bytes deflate(const PngPixels& px, const PngEncoding& encoding) {
     std::unique_ptr<libdeflate_compressor, CompressorDeleter> c(
         libdeflate_alloc_compressor(std::clamp(encoding.level, 0, 12)));
     if (!c) throw Error("not enough memory to encode it");
-    Bytes z(libdeflate_zlib_compress_bound(c.get(), filtered.size));
-    z.size = libdeflate_zlib_compress(c.get(), filtered.data.get(), filtered.size, z.data.get(), z.size);
+    Bytes z(libdeflate_zlib_compress_bound(c.get(), size));
+    z.size = libdeflate_zlib_compress(c.get(), filtered, size, z.data.get(), z.size);
     if (z.size == 0) throw Error("libdeflate could not compress the pixels");  // the bound was too small: a bug
     return z;
 }
 
 }  // namespace
 
-std::string encodePng(const PngPixels& px, const PngEncoding& encoding) {
+std::string encodeFilteredPng(const PngPixels& px, const unsigned char* filtered, std::size_t size,
+                              const PngEncoding& encoding) {
     try {
-        const Bytes z = deflate(px, encoding);
+        const Bytes z = deflate(filtered, size, px.channels, encoding);
         const char* zdata = reinterpret_cast<const char*>(z.data.get());
         std::string out;
         out.reserve(z.size + z.size / 1000 + 256);
@@ -102,6 +102,16 @@ std::string encodePng(const PngPixels& px, const PngEncoding& encoding) {
             putChunk(out, "IDAT", zdata + at, std::min(idatSize, z.size - at));
         putChunk(out, "IEND", "", 0);
         return out;
+    } catch (const std::bad_alloc&) {
+        throw Error("not enough memory to encode it");
+    }
+}
+
+std::string encodePng(const PngPixels& px, const PngEncoding& encoding) {
+    try {
+        Bytes filtered(filteredSize(px));
+        filterRows(px, encoding.filter, filtered.data.get());
+        return encodeFilteredPng(px, filtered.data.get(), filtered.size, encoding);
     } catch (const std::bad_alloc&) {
         throw Error("not enough memory to encode it");
     }

@@ -35,6 +35,12 @@ struct PngPixels {
 // darkroom::Error (without a path) when memory runs out.
 std::string encodePng(const PngPixels& pixels, const PngEncoding& encoding);
 
+// The same file from rows already filtered (`size` = filteredSize(pixels)
+// bytes laid out as filterRows lays them out; `pixels.data` is not read, and
+// `encoding.filter` is not applied again).
+std::string encodeFilteredPng(const PngPixels& pixels, const unsigned char* filtered, std::size_t size,
+                              const PngEncoding& encoding);
+
 // The filtered rows (a filter-type byte, then the row), as deflated, into
 // `out` of filteredSize(pixels) bytes. Exposed for the tests.
 std::size_t filteredSize(const PngPixels& pixels);
