@@ -6,7 +6,8 @@
 //
 // Usage: make_height_field_ply OUT.ply N [--big-endian]
 //   N = 4096 gives 33.5M triangles (704 MB), N = 12249 gives 300M (6.3 GB).
-#include <cmath>
+#include "height_field_terrain.h"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -15,31 +16,11 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-bool hostBigEndian() {
-    const std::uint16_t one = 1;
-    unsigned char b;
-    std::memcpy(&b, &one, 1);
-    return b == 0;
-}
-
-template <typename T>
-void put(std::vector<char>& out, T v, bool swap) {
-    char b[sizeof(T)];
-    std::memcpy(b, &v, sizeof(T));
-    if (swap)
-        for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-    out.insert(out.end(), b, b + sizeof(T));
-}
-
-// A smooth terrain with bumps at several scales over [-1, 1]^2, y up.
-float height(double x, double z) {
-    return float(0.15 * std::sin(3.1 * x) * std::cos(2.3 * z) + 0.05 * std::sin(17.0 * x + 5.0 * z) +
-                 0.01 * std::cos(61.0 * z - 37.0 * x));
-}
-
-}  // namespace
+using height_field::cellTriangles;
+using height_field::coordinate;
+using height_field::height;
+using height_field::hostBigEndian;
+using height_field::put;
 
 int main(int argc, char** argv) {
     if (argc < 3) {
@@ -64,9 +45,9 @@ int main(int argc, char** argv) {
     std::vector<char> row;
     for (long j = 0; j < n; ++j) {
         row.clear();
-        const double z = -1.0 + 2.0 * double(j) / double(n - 1);
+        const double z = coordinate(j, n);
         for (long i = 0; i < n; ++i) {
-            const double x = -1.0 + 2.0 * double(i) / double(n - 1);
+            const double x = coordinate(i, n);
             const float h = height(x, z);
             for (float v : {float(x), h, float(z), h}) put(row, v, swap);
         }
@@ -75,8 +56,8 @@ int main(int argc, char** argv) {
     for (long j = 0; j + 1 < n; ++j) {
         row.clear();
         for (long i = 0; i + 1 < n; ++i) {
-            const auto a = std::int32_t(j * n + i), b = a + 1, c = std::int32_t(a + n), d = c + 1;
-            const std::int32_t tris[2][3] = {{a, c, b}, {b, c, d}};
+            std::int32_t tris[2][3];
+            cellTriangles(i, j, n, tris);
             for (const auto& t : tris) {
                 put(row, std::uint8_t(3), false);
                 for (std::int32_t v : t) put(row, v, swap);

@@ -6,15 +6,22 @@
 # `darkroom capture --profile` under /usr/bin/time -v, and prints the time to
 # the first ray, the total, the peak RSS and the bytes per triangle.
 #
-#   bench/capture/run_ingest_bench.sh BUILD_DIR [N]
+#   bench/capture/run_ingest_bench.sh [--format ply|vtk|vtk51] BUILD_DIR [N]
 #
-# BUILD_DIR: a build with -DDARKROOM_BUILD_BENCH=ON (make_height_field_ply).
+# --format vtk writes the same mesh as BINARY legacy VTK (classic cells,
+# make_height_field_vtk), vtk51 in VTK 5.1's OFFSETS/CONNECTIVITY layout.
+# BUILD_DIR: a build with -DDARKROOM_BUILD_BENCH=ON (make_height_field_ply/_vtk).
 # DARKROOM=path/to/darkroom times another build's runner on the same file
 # (one without --profile reports no time to the first ray).
 # DARKROOM_INGEST_DIR=dir keeps the generated mesh there and reuses it.
 # The mesh is read from the page cache (it was just written or reused).
 set -eu
-build=${1:?usage: run_ingest_bench.sh BUILD_DIR [N]}
+format=ply
+if [ "${1:-}" = --format ]; then
+    format=${2:?--format takes ply, vtk or vtk51}
+    shift 2
+fi
+build=${1:?usage: run_ingest_bench.sh [--format ply|vtk|vtk51] BUILD_DIR [N]}
 n=${2:-4096}
 darkroom=${DARKROOM:-$build/bin/darkroom}
 if [ -n "${DARKROOM_INGEST_DIR:-}" ]; then
@@ -24,11 +31,20 @@ else
     dir=$(mktemp -d)
     trap 'rm -rf "$dir"' EXIT
 fi
-mesh=$dir/heightfield-$n.ply
-[ -f "$mesh" ] || "$build/bin/make_height_field_ply" "$mesh" "$n"
+case $format in
+    ply) file=heightfield-$n.ply; make="make_height_field_ply" ;;
+    vtk) file=heightfield-$n.vtk; make="make_height_field_vtk" ;;
+    vtk51) file=heightfield-$n-51.vtk; make="make_height_field_vtk" ;;
+    *) echo "run_ingest_bench.sh: unknown format '$format' (ply, vtk or vtk51)" >&2; exit 2 ;;
+esac
+mesh=$dir/$file
+if [ ! -f "$mesh" ]; then
+    if [ "$format" = vtk51 ]; then "$build/bin/$make" "$mesh" "$n" --offsets
+    else "$build/bin/$make" "$mesh" "$n"; fi
+fi
 cat > "$dir/scene.yaml" <<YAML
 objects:
-  - file: heightfield-$n.ply
+  - file: $file
 cameras:
   resolution: [1024, 1024]
   list:
@@ -50,12 +66,12 @@ triangles=$(( 2 * (n - 1) * (n - 1) ))
 wall=$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$dir/time.txt")
 rss=$(sed -n 's/.*Maximum resident set size (kbytes): //p' "$dir/time.txt")
 first=$(sed -n 's/.*first ray at \([0-9.]*\) s.*/\1/p' "$dir/time.txt")
-python3 - "$n" "$triangles" "$wall" "$rss" "${first:-}" "$(stat -c %s "$mesh")" <<'PY'
+python3 - "$n" "$triangles" "$wall" "$rss" "${first:-}" "$(stat -c %s "$mesh")" "$format" <<'PY'
 import sys
-n, tris, wall, rss_kb, first, size = sys.argv[1:]
+n, tris, wall, rss_kb, first, size, fmt = sys.argv[1:]
 parts = [float(p) for p in wall.split(':')]
 seconds = sum(p * 60 ** i for i, p in enumerate(reversed(parts)))
 tris, rss = int(tris), int(rss_kb) * 1024
-print(f"RESULT grid={n} triangles={tris} file_MB={int(size) / 1e6:.0f} first_ray_s={first or 'n/a'} "
+print(f"RESULT format={fmt} grid={n} triangles={tris} file_MB={int(size) / 1e6:.0f} first_ray_s={first or 'n/a'} "
       f"total_s={seconds:.2f} peak_rss_MB={rss / 1e6:.0f} bytes_per_triangle={rss / tris:.1f}")
 PY

@@ -1,5 +1,5 @@
 // Writes the binary seed corpora (EXR, PNG, TIFF, TGA, NPY, NPZ, VTI, H5 with the
-// project's own writers; binary STL and PLY byte by byte), so that no binary file is committed:
+// project's own writers; binary STL, PLY and legacy VTK byte by byte), so that no binary file is committed:
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
 #include "formats/h5_image.h"
@@ -11,8 +11,10 @@
 #include <darkroom/data/formats/vti.h>
 #include <darkroom/data/image_io.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -81,6 +83,42 @@ std::string binaryTrianglePly() {
     return s;
 }
 
+template <class T>
+void putBigEndian(std::string& s, T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    std::reverse(b, b + sizeof(T));  // legacy VTK's binary data is big-endian
+    s.append(b, sizeof(T));
+}
+
+// The unit square of binaryTrianglePly() as a BINARY legacy VTK POLYDATA
+// with a point scalar, in the classic cell layout or VTK 5.1's
+// OFFSETS/CONNECTIVITY: what the direct reader (vtk_legacy/legacy_triangles.h) takes.
+std::string binaryTriangleVtk(bool offsets) {
+    std::string s = std::string("# vtk DataFile Version ") + (offsets ? "5.1" : "3.0") +
+                    "\nsquare\nBINARY\nDATASET POLYDATA\nPOINTS 4 float\n";
+    const float points[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    for (const auto& p : points)
+        for (float v : p) putBigEndian(s, v);
+    const std::int32_t faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    if (offsets) {
+        s += "\nPOLYGONS 3 6\nOFFSETS vtktypeint64\n";
+        for (std::int64_t o : {0, 3, 6}) putBigEndian(s, o);
+        s += "\nCONNECTIVITY vtktypeint64\n";
+        for (const auto& f : faces)
+            for (std::int32_t i : f) putBigEndian(s, std::int64_t(i));
+    } else {
+        s += "\nPOLYGONS 2 8\n";
+        for (const auto& f : faces) {
+            putBigEndian(s, std::int32_t(3));
+            for (std::int32_t i : f) putBigEndian(s, i);
+        }
+    }
+    s += "\nPOINT_DATA 4\nSCALARS height float 1\nLOOKUP_TABLE default\n";
+    for (const auto& p : points) putBigEndian(s, p[0] + p[1]);
+    return s + "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,7 +127,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path root = argv[1];
-    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl", "h5", "ply"}) fs::create_directories(root / d);
+    for (const char* d : {"exr", "image", "npy", "npz", "vti", "stl", "h5", "ply", "vtk"}) fs::create_directories(root / d);
     try {
         // EXR: float RGBA with a camera-free G-buffer channel, each compression.
         const auto gbuffer = image(4, 3, {"R", "G", "B", "A", "Z", {"id", ChannelType::UInt32}});
@@ -172,6 +210,10 @@ int main(int argc, char** argv) {
                    binaryStl("solid exported", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}}));
         // Binary PLY of triangles: what the direct reader (ply/ply_triangles.h) takes.
         writeBytes(root / "ply" / "binary-triangles.ply", binaryTrianglePly());
+        // Binary legacy VTK of triangles, both cell layouts: what the direct
+        // reader (vtk_legacy/legacy_triangles.h) takes.
+        writeBytes(root / "vtk" / "binary-triangles.vtk", binaryTriangleVtk(false));
+        writeBytes(root / "vtk" / "binary-triangles-5.1.vtk", binaryTriangleVtk(true));
     } catch (const std::exception& e) {
         std::cerr << "fuzz_seeds: " << e.what() << "\n";
         return 1;

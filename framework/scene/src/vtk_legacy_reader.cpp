@@ -2,34 +2,28 @@
 // LINES, POLYGONS, TRIANGLE_STRIPS (classic "n size" layout and the 5.1
 // OFFSETS/CONNECTIVITY layout), POINT_DATA/CELL_DATA with SCALARS, VECTORS,
 // NORMALS, TEXTURE_COORDINATES, TENSORS, COLOR_SCALARS and FIELD arrays.
+// Binary triangle meshes are read by vtk_legacy/legacy_triangles.h, straight
+// into the surface's arrays; this general reader takes every other file, and
+// every file that one finds wrong, so that it alone words the errors.
 #include <darkroom/data/formats/number_text.h>
 #include <darkroom/data/formats/binary_values.h>
 #include "poly_mesh.h"
+#include "vtk_legacy/legacy_triangles.h"
+#include "vtk_legacy/legacy_types.h"
 #include <darkroom/data/formats/text_cursor.h>
 
 #include <darkroom/scene/mesh_readers.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace darkroom {
 namespace {
 
 using mesh::ValueType;
-
-std::optional<ValueType> legacyType(std::string_view s) {
-    if (s == "char") return ValueType::Int8;
-    if (s == "unsigned_char") return ValueType::UInt8;
-    if (s == "short") return ValueType::Int16;
-    if (s == "unsigned_short") return ValueType::UInt16;
-    if (s == "int") return ValueType::Int32;
-    if (s == "unsigned_int") return ValueType::UInt32;
-    if (s == "long" || s == "vtktypeint64") return ValueType::Int64;
-    if (s == "unsigned_long" || s == "vtktypeuint64") return ValueType::UInt64;
-    if (s == "float") return ValueType::Float32;
-    if (s == "double") return ValueType::Float64;
-    return std::nullopt;
-}
+using vtk_legacy::legacyType;
 
 class LegacyReader {
 public:
@@ -276,10 +270,22 @@ private:
 
 }  // namespace
 
-std::vector<SceneObject> readVtkLegacy(const std::string& path) {
+std::vector<SceneObject> readVtkLegacy(const std::string& path) { return readVtkLegacy(path, VtkLegacyReadOptions{}); }
+
+std::vector<SceneObject> readVtkLegacy(const std::string& path, const VtkLegacyReadOptions& options) {
+    const std::string name = std::filesystem::path(path).stem().string();
+    if (options.direct) {
+        std::optional<SceneObject> surface =
+            vtk_legacy::readTriangles(path, name, std::max<std::size_t>(options.windowBytes, 1));
+        if (surface) {
+            std::vector<SceneObject> out;
+            out.push_back(std::move(*surface));
+            return out;
+        }
+    }
     const std::string data = mesh::readWholeFile(path, "mesh");
     LegacyReader reader(path, data);
-    return mesh::buildSceneObjects(reader.read(), std::filesystem::path(path).stem().string());
+    return mesh::buildSceneObjects(reader.read(), name);
 }
 
 }  // namespace darkroom

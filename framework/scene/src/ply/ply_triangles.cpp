@@ -1,59 +1,28 @@
 #include "ply_triangles.h"
 
 #include "../poly_mesh.h"
-#include "file_range_reader.h"
+#include "../windowed/record_windows.h"
+#include "../windowed/typed_load.h"
 #include "ply_header.h"
 
 #include <darkroom/error.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <atomic>
-#include <cstring>
-#include <functional>
 #include <type_traits>
 #include <vector>
 
 namespace darkroom::ply {
 namespace {
 
+using windowed::FileRangeReader;
+using windowed::load;
+using windowed::readRecords;
+using windowed::Span;
+using windowed::withType;
+
 // A header longer than this (real ones are a few hundred bytes) goes to the
 // general reader, which holds the whole file anyway.
 constexpr std::size_t kHeaderBytes = std::size_t(1) << 16;
-// Records per parallel task: big enough to amortise a task, small enough to
-// share a window between the cores.
-constexpr std::size_t kGrain = std::size_t(1) << 14;
-
-template <typename T>
-T load(const char* p, bool swap) {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, p, sizeof(T));
-    if (swap) std::reverse(b, b + sizeof(T));
-    T v;
-    std::memcpy(&v, b, sizeof(T));
-    return v;
-}
-
-// f(T{}) for the C++ type of a PLY value type, so that loops over values
-// are compiled per type instead of switching per value.
-template <typename F>
-decltype(auto) withType(ValueType t, F&& f) {
-    switch (t) {
-        case ValueType::Int8: return f(std::int8_t{});
-        case ValueType::UInt8: return f(std::uint8_t{});
-        case ValueType::Int16: return f(std::int16_t{});
-        case ValueType::UInt16: return f(std::uint16_t{});
-        case ValueType::Int32: return f(std::int32_t{});
-        case ValueType::UInt32: return f(std::uint32_t{});
-        case ValueType::Int64: return f(std::int64_t{});
-        case ValueType::UInt64: return f(std::uint64_t{});
-        case ValueType::Float32: return f(float{});
-        case ValueType::Float64: break;
-    }
-    return f(double{});
-}
 
 // One scalar property of a fixed-size record and where its values go:
 // out[i * stride] for record i, as the float the general reader stores.
@@ -70,12 +39,6 @@ struct FaceLayout {
     ValueType countType = ValueType::UInt8, indexType = ValueType::Int32;
     std::vector<Column> cells;
     std::vector<std::string> cellNames;
-};
-
-// Records [begin, end) of a window that starts at record `first`.
-struct Span {
-    const char* window;
-    std::size_t first, begin, end;
 };
 
 // Record i's value goes to out[i * stride], or, with `where`, to
@@ -148,25 +111,6 @@ std::optional<FaceLayout> faceLayout(const Element& face) {
     }
     if (lists != 1) return std::nullopt;
     return f;
-}
-
-// Reads `count` records of `recordSize` bytes from `offset`, a window at a
-// time, and decodes each window in parallel tasks; false when the file ends
-// early or a task's decode fails.
-bool readRecords(const FileRangeReader& file, std::uint64_t offset, std::size_t count, std::size_t recordSize,
-                 std::size_t windowBytes, std::vector<char>& buffer, const std::function<bool(const Span&)>& decode) {
-    const std::size_t perWindow = std::max<std::size_t>(1, windowBytes / recordSize);
-    for (std::size_t first = 0; first < count; first += perWindow) {
-        const std::size_t n = std::min(perWindow, count - first);
-        if (buffer.size() < n * recordSize) buffer.resize(n * recordSize);
-        if (!file.read(offset + first * recordSize, n * recordSize, buffer.data())) return false;
-        std::atomic<bool> ok{true};
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-            if (!decode({buffer.data(), first, r.begin(), r.end()})) ok.store(false, std::memory_order_relaxed);
-        });
-        if (!ok.load()) return false;
-    }
-    return true;
 }
 
 // The surface's arrays, laid out as the general reader lays them out: point

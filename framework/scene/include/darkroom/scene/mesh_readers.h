@@ -44,6 +44,14 @@ DARKROOM_API std::vector<SceneObject> readOff(const std::string& path);
 // become one vertex (numbered in first use).
 DARKROOM_API std::vector<SceneObject> readStl(const std::string& path);
 DARKROOM_API std::vector<SceneObject> readVtkLegacy(const std::string& path);
+// How readVtkLegacy reads a BINARY POLYDATA of triangles (float or double
+// points, 1-component point SCALARS at most), as PlyReadOptions for PLY:
+// directly by default, or with the general reader; both give the same objects.
+struct VtkLegacyReadOptions {
+    bool direct = true;
+    std::size_t windowBytes = std::size_t(32) << 20;
+};
+DARKROOM_API std::vector<SceneObject> readVtkLegacy(const std::string& path, const VtkLegacyReadOptions& options);
 DARKROOM_API std::vector<SceneObject> readVtkXml(const std::string& path,
                                                  std::vector<std::string>* warnings = nullptr);
 // A parallel VTK XML file (.pvtp, or .pvtu of 2D cells): every piece it names,

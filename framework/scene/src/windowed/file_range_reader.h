@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-namespace darkroom::ply {
+namespace darkroom::windowed {
 
 class FileRangeReader {
 public:
@@ -27,4 +27,4 @@ private:
     std::uint64_t size_ = 0;
 };
 
-}  // namespace darkroom::ply
+}  // namespace darkroom::windowed

@@ -6,7 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace darkroom::ply {
+namespace darkroom::windowed {
 
 FileRangeReader::FileRangeReader(const std::string& path) {
     // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused below).
@@ -36,4 +36,4 @@ bool FileRangeReader::read(std::uint64_t offset, std::size_t n, char* out) const
     return true;
 }
 
-}  // namespace darkroom::ply
+}  // namespace darkroom::windowed
