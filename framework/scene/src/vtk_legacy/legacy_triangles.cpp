@@ -92,7 +92,7 @@ void scatter(const Span& s, mesh::ValueType type, std::size_t components, const 
         for (std::size_t i = s.first + s.begin; i < s.first + s.end; ++i, p += components * sizeof(T)) {
             if (where[i] == mesh::kStripRestart) continue;
             float* o = out + std::size_t(where[i]) * stride;
-            for (std::size_t k = 0; k < components; ++k) o[k] = float(double(load<T>(p + k * sizeof(T), kSwap)));
+            for (std::size_t k = 0; k < components; ++k) o[k] = windowed::storedFloat(load<T>(p + k * sizeof(T), kSwap));
         }
     });
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace darkroom::windowed {
 
@@ -18,6 +19,25 @@ T load(const char* p, bool swap) {
     T v;
     std::memcpy(&v, b, sizeof(T));
     return v;
+}
+
+// The float the general legacy VTK reader stores for a value of the file:
+// its double (kept in an array of doubles) narrowed to float. For a float
+// that is the value itself, except that a signalling NaN comes out quiet
+// (widening sets the quiet bit); the compiler folds float(double(f)) to f,
+// so the bit is set here, and both readers give the same bits.
+template <typename T>
+float storedFloat(T v) {
+    if constexpr (std::is_same_v<T, float>) {
+        if (v == v) return v;
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, 4);
+        bits |= 0x00400000u;
+        std::memcpy(&v, &bits, 4);
+        return v;
+    } else {
+        return float(double(v));
+    }
 }
 
 // f(T{}) for the C++ type of a file's value type.
