@@ -72,6 +72,6 @@ n, tris, wall, rss_kb, first, size, fmt = sys.argv[1:]
 parts = [float(p) for p in wall.split(':')]
 seconds = sum(p * 60 ** i for i, p in enumerate(reversed(parts)))
 tris, rss = int(tris), int(rss_kb) * 1024
-print(f"RESULT format={fmt} grid={n} triangles={tris} file_MB={int(size) / 1e6:.0f} first_ray_s={first or 'n/a'} "
-      f"total_s={seconds:.2f} peak_rss_MB={rss / 1e6:.0f} bytes_per_triangle={rss / tris:.1f}")
+print(f"RESULT grid={n} triangles={tris} file_MB={int(size) / 1e6:.0f} first_ray_s={first or 'n/a'} "
+      f"total_s={seconds:.2f} peak_rss_MB={rss / 1e6:.0f} bytes_per_triangle={rss / tris:.1f} format={fmt}")
 PY
