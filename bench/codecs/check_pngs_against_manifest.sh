@@ -3,11 +3,12 @@
 # PNGs recorded in the manifest by the encoder before it? Each PNG of a kept
 # run (check_example_outputs.sh check BUILD MANIFEST WORK_DIR) is decoded and
 # encoded again as the manifest's encoder did (png_reencode_before AS:
-# libpng-z2 or libdeflate-l1, the default); its SHA-256 must be the
+# libpng-z2, libdeflate-l1, or runs, the default: the writer's run encoder,
+# which recorded the manifest's PNGs since 29 November); its SHA-256 must be the
 # manifest's. Prints one line per PNG; exits 1 if any differs.
 #   check_pngs_against_manifest.sh BUILD MANIFEST WORK_DIR [AS]
 set -euo pipefail
-build=$1 manifest=$2 run=$3/run as=${4:-libdeflate-l1}
+build=$1 manifest=$2 run=$3/run as=${4:-runs}
 tool=$build/bench/codecs/png_reencode_before
 [ -x "$tool" ] || tool=$build/bin/png_reencode_before
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
