@@ -1,5 +1,6 @@
 #include "hashing.h"
 #include "node_runner.h"
+#include "same_bytes.h"
 #include "shared_sources_impl.h"
 
 #include <darkroom/error.h>
@@ -120,7 +121,7 @@ BufferPtr keepUnchangedPlanes(const BufferPtr& fresh, const BufferPtr& previous)
         const PlanePtr now = fresh->plane(c.name);
         const PlanePtr before = previous->plane(c.name);
         if (!before || before == now || previous->channelType(c.name) != c.type) continue;
-        if (bytes && std::memcmp(now->data(), before->data(), bytes) != 0) continue;
+        if (bytes && !sameBytes(now->data(), before->data(), bytes)) continue;
         if (!merged) {
             merged = makeHostBuffer(fresh->width(), fresh->height());
             merged->metadata() = fresh->metadata();
