@@ -22,6 +22,8 @@ case "$2" in
 esac
 version=$(sed -n "s/^#define $macro \([0-9]*\)u\{0,1\}.*/\1/p" "$version_header")
 baseline="$baseline_dir/darkroom-$2-abi$version.xml"
+# Standard library template instantiations are not compared (why: abi_suppressions.ini).
+abi_suppressions="$1/scripts/abi_suppressions.ini"
 abi_dump() {
   abidw --headers-dir "$headers" --no-corpus-path --no-show-locs --drop-private-types --no-comp-dir-path \
     --exported-interfaces-only --type-id-style hash --no-elf-needed --out-file "$2" "$1"

@@ -2,7 +2,7 @@
 // project's own writers; binary STL, PLY and legacy VTK byte by byte), so that no binary file is committed:
 //   fuzz_seeds <folder>  ->  <folder>/<harness>/<seed>
 // Text seeds are committed under tests/fuzz/corpus/<harness>/.
-#include "formats/h5_image.h"
+#include "h5_image.h"
 #include "io/exr_file.h"
 #include "../../framework/data/oiio/module.h"
 

@@ -36,7 +36,7 @@ current=$(mktemp --suffix=.xml)
 trap 'rm -f "$current"' EXIT
 abi_dump "$lib" "$current"
 set +e
-report=$(abidiff "$baseline" "$current" 2>&1)
+report=$(abidiff --suppressions "$abi_suppressions" "$baseline" "$current" 2>&1)
 status=$?
 set -e
 if [ $status -eq 0 ]; then

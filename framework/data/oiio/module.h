@@ -1,7 +1,7 @@
 #pragma once
 // The OpenImageIO module: every image format besides the framework's own EXR
 // and PNG code, in a library of its own (libdarkroom-oiio.so) that the
-// framework opens on first use (framework/data/src/io/oiio_loader.cpp). Linking
+// framework opens on first use (framework/data/src/io/optional_module.cpp). Linking
 // OpenImageIO loads ~260 shared libraries whose start-up costs ~130 MB and a
 // few hundred milliseconds; a run that reads and writes only EXR and PNG
 // never pays it.
@@ -19,7 +19,8 @@ std::shared_ptr<WritableBuffer> readImage(const std::string& path);
 io::ImageHeader readHeader(const std::string& path);
 void writeImage(const Buffer& image, const std::string& path, const ImageWriteOptions& options);
 
-// What the module's one exported symbol returns. `version` changes whenever
+// What the module's one exported symbol returns. `version` comes first (the
+// loader reads it before anything else) and changes whenever
 // this struct or the functions' signatures do; the framework refuses another.
 struct Entry {
     int version;

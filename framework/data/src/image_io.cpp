@@ -2,7 +2,7 @@
 // other format through the OpenImageIO module, loaded only when one is met.
 #include "io/exr_file.h"
 #include "io/image_header.h"
-#include "io/oiio_loader.h"
+#include "io/optional_module.h"
 #include "io/png_file.h"
 
 #include <darkroom/error.h>

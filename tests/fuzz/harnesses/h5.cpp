@@ -14,7 +14,7 @@
 // too-big allocation returns null instead of stopping the run.
 #include "harness.h"
 
-#include "formats/h5_image.h"
+#include "h5_image.h"
 
 #include <darkroom/error.h>
 

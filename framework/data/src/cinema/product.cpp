@@ -1,6 +1,6 @@
 // Reading one product by its extension (images, .npz arrays, .vti images),
 // and telling the products that are geometry (meshes, volumes) from images.
-#include "../formats/h5_image.h"
+#include "../io/optional_module.h"
 
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
@@ -149,7 +149,7 @@ std::shared_ptr<WritableBuffer> readCinemaProduct(const std::string& path, Diagn
     const std::string ext = extensionOf(path);
     if (ext == ".npz") return npzBuffer(path);
     if (ext == ".h5") {
-        h5::Image image = h5::readImageFile(path);
+        h5::Image image = io::h5Module("reading '" + path + "'").readImageFile(path);
         if (warnings)
             for (auto& w : image.warnings) warnings->push_back(std::move(w));
         return std::move(image.buffer);

@@ -2,7 +2,7 @@
 // data.csv, all under a folder lock. See writer.h for the guarantees.
 #include "database_lock.h"
 #include "database_marker.h"
-#include "../formats/h5_image.h"
+#include "../io/optional_module.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
@@ -540,7 +540,7 @@ void writeProduct(const Buffer& image, const std::string& path, const CinemaPara
         else
             meta[column] = value.text();
     }
-    h5::writeImageFile(image, path, meta);
+    io::h5Module("writing '" + path + "'").writeImageFile(image, path, meta);
 }
 
 }  // namespace

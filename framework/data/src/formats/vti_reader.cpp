@@ -5,6 +5,7 @@
 
 #include <darkroom/error.h>
 #include <darkroom/data/formats/vti.h>
+#include "ttk_depth.h"
 #include <darkroom/limits.h>
 
 #include <fmt/format.h>
@@ -66,10 +67,7 @@ Camera toDarkroomCamera(const TtkCamera& t) {
 }
 
 float ttkDepthToPlanar(float d, double nearPlane, double farPlane) {
-    if (std::isnan(d)) return std::numeric_limits<float>::infinity();
-    if (nearPlane == 0.0 && farPlane == 0.0) return d;
-    if (d >= 1.f) return std::numeric_limits<float>::infinity();
-    return float(nearPlane + double(d) * (farPlane - nearPlane));
+    return formats::planarFromTtkDepth(d, nearPlane, farPlane);
 }
 
 namespace {

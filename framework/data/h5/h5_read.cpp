@@ -3,12 +3,12 @@
 // and checked before a pixel is allocated, then read into one buffer.
 #include "h5_image.h"
 #include "h5_read_parts.h"
+#include "../src/formats/ttk_depth.h"
 
 #include <darkroom/error.h>
 #include <darkroom/input_file.h>
 #include <darkroom/limits.h>
 #include <darkroom/srgb.h>
-#include <darkroom/data/formats/vti.h>
 
 #include <fmt/format.h>
 
@@ -151,7 +151,7 @@ void convertDepth(float* z, std::size_t n, const MetaValuesRead& meta, WritableB
     for (std::size_t i = 0; i < n && normalised; ++i) normalised = std::isnan(z[i]) || (z[i] >= 0.f && z[i] <= 1.f);
     std::string& convention = out.metadata().attributes["depth.convention"];
     if (haveNearFar) {
-        for (std::size_t i = 0; i < n; ++i) z[i] = ttkDepthToPlanar(z[i], nf->second[0], nf->second[1]);
+        for (std::size_t i = 0; i < n; ++i) z[i] = formats::planarFromTtkDepth(z[i], nf->second[0], nf->second[1]);
         convention = fmt::format("normalised depth; Z = near + d (far - near) with near {} far {}; 1.0 background -> "
                                  "+inf",
                                  nf->second[0], nf->second[1]);

@@ -2,7 +2,7 @@
 // images"): built in memory with HDF5's core driver, then written atomically.
 #include "h5_handle.h"
 #include "h5_image.h"
-#include "../io/stored_attributes.h"
+#include "../src/io/stored_attributes.h"
 
 #include <darkroom/atomic_file.h>
 #include <darkroom/error.h>
