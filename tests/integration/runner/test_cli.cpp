@@ -402,3 +402,24 @@ TEST(RunnerCli, ForeachFoldsARepeatedWarningIntoOneLineWithItsCount) {
         << r.err;
     EXPECT_EQ(count(r.err, "\n"), 2u) << r.err;
 }
+
+// Highway's start-up probe of its timer (apps/darkroom/highway_timer.cpp)
+// binds to the runner's own answer, not libhwy's 6 ms spin: the dynamic
+// linker's record of its bindings says which object supplied the symbol.
+TEST(RunnerCli, HighwaysTimerProbeAtStartIsTheRunnersOwn) {
+    const auto r = runDarkroom({"--version"}, {"LD_DEBUG=bindings"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string binding;
+    for (std::size_t at = 0; (at = r.err.find("TimerResolution", at)) != std::string::npos; ++at) {
+        const std::size_t begin = r.err.rfind('\n', at) + 1, end = r.err.find('\n', at);
+        binding = r.err.substr(begin, end - begin);
+        if (binding.find("libhwy") != std::string::npos) break;  // libhwy's own call
+    }
+    ASSERT_FALSE(binding.empty()) << "libhwy's start-up no longer asks for TimerResolution (harmless: remove "
+                                     "highway_timer.cpp)";
+    // "binding file .../libhwy.so.1 [0] to .../darkroom [0]: normal symbol `...TimerResolution...'"
+    const std::size_t to = binding.find(" to ");
+    ASSERT_NE(to, std::string::npos) << binding;
+    EXPECT_NE(binding.find("darkroom [0]:", to), std::string::npos) << binding;
+    EXPECT_EQ(binding.find("libhwy", to), std::string::npos) << binding;
+}
