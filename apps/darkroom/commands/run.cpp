@@ -132,8 +132,10 @@ int evaluatePipeline(Graph& g, const RunArgs& a, const GlobalOptions& global, Ev
 }
 
 int runPipeline(const GlobalOptions& global, const RunArgs& a) {
-    // Only the plugins the pipeline's nodes come from (and capture backends).
-    const std::optional<std::set<std::string>> types = pipelineNodeTypes(a.path);
+    // Only the plugins the pipeline's nodes come from, and the capture
+    // backends when a Capture node will create one.
+    std::optional<std::set<std::string>> types = pipelineNodeTypes(a.path);
+    if (types && types->count("Capture")) types->insert(Registry::kEveryCaptureBackend);
     const Registry& r = loadRegistry(global, types ? &*types : nullptr);
     Diagnostics d;
     Graph g = loadPipeline(a.path, r, d);

@@ -78,11 +78,14 @@ std::vector<std::string> Registry::defaultSearchPath(const std::vector<std::stri
 namespace {
 
 // Whether a plugin whose registered types are `types` is needed for the
-// node types `wanted`: one of them, or a capture backend (which a Capture
-// node picks by a parameter's value, not by a node type).
+// node types `wanted`: one of them, or a capture backend when the host asked
+// for every one (kEveryCaptureBackend: a Capture node picks its backend by a
+// parameter's value, not by a node type).
 bool needed(const std::vector<std::string>& types, const std::set<std::string>& wanted) {
-    return std::any_of(types.begin(), types.end(),
-                       [&](const std::string& t) { return wanted.count(t) || t.rfind("backend:", 0) == 0; });
+    const bool backends = wanted.count(Registry::kEveryCaptureBackend) > 0;
+    return std::any_of(types.begin(), types.end(), [&](const std::string& t) {
+        return wanted.count(t) || (backends && t.rfind("backend:", 0) == 0);
+    });
 }
 
 }  // namespace

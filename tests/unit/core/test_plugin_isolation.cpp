@@ -93,9 +93,10 @@ TEST_F(PluginIsolation, ASymlinkLoopInAPluginFolderIsReportedAndSkipped) {
 }
 
 // A host that needs some node types (`darkroom run` of a pipeline) loads
-// only the plugins that register them, and every capture backend; the scan
-// cache records each plugin's types, and a cache written before it did is
-// probed again to learn them. The rest can still be loaded.
+// only the plugins that register them, and the capture backends only when
+// it asks for them; the scan cache records each plugin's types, and a cache
+// written before it did is probed again to learn them. The rest can still
+// be loaded.
 TEST_F(PluginIsolation, OnlyThePluginsOfTheWantedTypesAreLoaded) {
     const std::set<std::string> wanted{"ColorMapping", "CinemaReader"};
     const auto check = [&] {
@@ -106,13 +107,22 @@ TEST_F(PluginIsolation, OnlyThePluginsOfTheWantedTypesAreLoaded) {
         EXPECT_NE(r.filter("CinemaReader"), nullptr);
         EXPECT_EQ(r.filter("Movie"), nullptr);
         EXPECT_EQ(r.filter("SSAO"), nullptr);
-        EXPECT_NE(r.backend("embree"), nullptr);
+        EXPECT_EQ(r.backend("embree"), nullptr);
         EXPECT_GT(r.setAside(), 10u);
         EXPECT_TRUE(r.loadSetAside().empty());
         EXPECT_NE(r.filter("Movie"), nullptr);
         EXPECT_EQ(r.setAside(), 0u);
     };
     check();  // probed now
+    {
+        // A pipeline that captures asks for the backends as well.
+        const std::set<std::string> capturing{"Capture", Registry::kEveryCaptureBackend};
+        Registry r;
+        EXPECT_TRUE(r.loadPlugins(Registry::defaultSearchPath(), &capturing).empty());
+        EXPECT_NE(r.filter("Capture"), nullptr);
+        EXPECT_NE(r.backend("embree"), nullptr);
+        EXPECT_EQ(r.filter("ColorMapping"), nullptr);
+    }
     const std::string cache = test::readText(dir_.file("scan.tsv"));
     EXPECT_NE(cache.find("\ttypes=ColorMapping\n"), std::string::npos) << cache;
     EXPECT_NE(cache.find("\ttypes=backend:embree\n"), std::string::npos) << cache;

@@ -55,13 +55,16 @@ public:
     // files are first loaded in a child process (darkroom-plugin-probe): one
     // that crashes, exits or hangs there is quarantined, not loaded.
     //
-    // `wanted`, when given: the node types the host needs (a pipeline's). A
-    // plugin the scan knows registers none of them, and no capture backend,
-    // is not loaded but kept aside (dlopen of a plugin linking FFmpeg or
-    // pango costs more than many a pipeline's run); loadSetAside() loads
+    // `wanted`, when given: the node types the host needs (a pipeline's),
+    // and kEveryCaptureBackend when it creates capture backends (a pipeline
+    // with a Capture node, which picks one by a parameter's value). A plugin
+    // the scan knows registers none of them is not loaded but kept aside
+    // (dlopen of a plugin linking FFmpeg or pango costs more than many a
+    // pipeline's run, and Embree's backend about 5 ms); loadSetAside() loads
     // those later, e.g. when a type turns out to be missing.
     Diagnostics loadPlugins(const std::vector<std::string>& searchPath,
                             const std::set<std::string>* wanted = nullptr);
+    static constexpr const char* kEveryCaptureBackend = "backend:*";
     // Loads the plugins loadPlugins set aside; none: nothing happens.
     Diagnostics loadSetAside();
     std::size_t setAside() const { return setAside_.size(); }
