@@ -59,7 +59,7 @@ public:
     EdgeBatch(const fxaa::LumaPlane& plane, const fxaa::Settings& s, const ColourPlanes& planes)
         : plane_(plane), s_(s), planes_(planes),
           vectorised_(std::size_t(plane.width) * std::size_t(plane.height) <= std::size_t(INT32_MAX)) {
-        const std::size_t capacity = kFlush + std::size_t(plane.width);
+        const std::size_t capacity = kFlush + std::size_t(plane.width) + 64;  // 64: flatSpan's vector stores
         xs_.resize(capacity);
         ys_.resize(capacity);
         amount_.resize(capacity);
@@ -76,6 +76,16 @@ public:
         xs_[count_] = x;
         ys_[count_] = y;
         ++count_;
+    }
+
+    // Row y, 0 < y < height - 1, from x = 1: flatSpan copies the flat pixels
+    // and queues the others. Returns where it stopped (1 when the row is
+    // shorter than a vector).
+    int addInterior(const fxaa::ColourRows& rows, int y) {
+        const std::size_t before = count_;
+        const int x = fxaa::flatSpan(plane_, s_, rows, y, 1, plane_.width - 1, xs_.data(), count_);
+        std::fill(ys_.begin() + std::ptrdiff_t(before), ys_.begin() + std::ptrdiff_t(count_), y);
+        return std::max(x, 1);
     }
 
     // Decides and writes the queued pixels once a row has made them enough
@@ -184,16 +194,12 @@ void Fxaa::execute(Context& ctx) {
     // together.
     const fxaa::ColourRows rows{{r, g, b, a}, {planes.outR, planes.outG, planes.outB, planes.outA}};
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
-        std::vector<std::uint8_t> needsDecision(rowLength);
         EdgeBatch batch(plane, s, planes);
         for (int y = y0; y < y1; ++y) {
             int x = 0;
             if (y > 0 && y < h - 1 && w > 2) {
                 batch.add(0, y);
-                x = fxaa::flatSpan(plane, s, rows, y, 1, w - 1, needsDecision.data());
-                for (int k = 1; k < x; ++k)
-                    if (needsDecision[std::size_t(k)]) batch.add(k, y);
-                x = std::max(x, 1);
+                x = batch.addInterior(rows, y);
             }
             for (; x < w; ++x) batch.add(x, y);
             batch.flush(false);

@@ -52,12 +52,12 @@ std::size_t LumaSpan(const float* r, const float* g, const float* b, const float
 }
 
 int FlatSpan(const LumaPlane& plane, const Settings& s, const ColourRows& colour, int y, int x0, int x1,
-             std::uint8_t* needsDecision) {
+             std::int32_t* edgeXs, std::size_t& edgeCount) {
     const DF df;
     const hn::RebindToSigned<DF> di;
-    const hn::Rebind<std::uint8_t, DF> d8;
     const int lanes = int(hn::Lanes(df));
     if (x1 - x0 < lanes) return x0;
+    int listed = x0;  // the pixels before it are on the list already (the last vector overlaps)
     const std::size_t w = std::size_t(plane.width);
     const float* row = plane.luma + std::size_t(y) * w;
     const VF thresholdMin = hn::Set(df, s.edgeThresholdMin), threshold = hn::Set(df, s.edgeThreshold);
@@ -80,8 +80,13 @@ int FlatSpan(const LumaPlane& plane, const Settings& s, const ColourRows& colour
         const std::size_t i = std::size_t(y) * w + std::size_t(x);
         for (int c = 0; c < 4; ++c)
             if (colour.in[c]) hn::StoreU(hn::LoadU(df, colour.in[c] + i), df, colour.out[c] + i);
-        const auto decide = hn::And(hn::VecFromMask(di, hn::RebindMask(di, hn::Not(flat))), hn::Set(di, 1));
-        hn::StoreU(hn::DemoteTo(d8, decide), d8, needsDecision + x);
+        const auto xs = hn::Iota(di, x);
+        const auto edge = hn::And(hn::RebindMask(di, hn::Not(flat)), hn::Gt(xs, hn::Set(di, listed - 1)));
+        // Compress in a register and store the whole vector: a masked
+        // compressing store to memory is microcoded on some x86 cores.
+        hn::StoreU(hn::Compress(xs, edge), di, edgeXs + edgeCount);
+        edgeCount += hn::CountTrue(di, edge);
+        listed = x + lanes;
         if (x + lanes == x1) return x1;
     }
 }
@@ -297,8 +302,8 @@ std::size_t lumaSpan(const float* r, const float* g, const float* b, const float
     return HWY_DYNAMIC_DISPATCH(LumaSpan)(r, g, b, alpha, luma, begin, end);
 }
 int flatSpan(const LumaPlane& plane, const Settings& s, const ColourRows& colour, int y, int x0, int x1,
-             std::uint8_t* needsDecision) {
-    return HWY_DYNAMIC_DISPATCH(FlatSpan)(plane, s, colour, y, x0, x1, needsDecision);
+             std::int32_t* edgeXs, std::size_t& edgeCount) {
+    return HWY_DYNAMIC_DISPATCH(FlatSpan)(plane, s, colour, y, x0, x1, edgeXs, edgeCount);
 }
 void decideList(const LumaPlane& plane, const Settings& s, const std::int32_t* xs, const std::int32_t* ys,
                 std::size_t count, float* amount, std::int32_t* partner) {
