@@ -7,6 +7,7 @@
 #include "luma.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 HWY_BEFORE_NAMESPACE();
@@ -115,27 +116,35 @@ struct VectorReader {
     }
 };
 
-// One lane's edge, as the end-of-edge search walks along it: plane index =
-// clamp(along) * alongStride + the part across the edge, `base0` on the
-// centre's line and `base1` on the neighbour's.
+// One lane's edge, as the end-of-edge search walks along it from `along` (x
+// for horizontal edges, y for vertical ones): plane index = clamp(position)
+// * alongStride + the part across the edge, `base0` on the centre's line and
+// `base1` on the neighbour's.
 struct EdgeLanes {
-    VI alongStride, alongLast, base0, base1;
-    VF origin, pairAverage, gradientQuarter;
+    VI along, alongStride, alongLast, base0, base1;
+    VF pairAverage, gradientQuarter;
 };
 
-// Reader::edgeSample at position t along the edge, the same operations in
-// the same order.
-VF EdgeSample(const VectorReader& r, const EdgeLanes& e, VF t) {
+// Reader::edgeSample for every lane at `offset` pixels along the edge from
+// its pixel. The lanes still searching have all walked the same steps, so the
+// offset is one number: floor and fraction are taken once, exactly as
+// edgeSample takes them per pixel (the origin is a whole pixel, so
+// floor(origin + offset) = origin + floor(offset)). At whole-pixel offsets
+// (f = 0) a + f (b - a) is a itself (b - a is finite: luma lies in [0, 1]),
+// so b is not read.
+VF EdgeSample(const VectorReader& r, const EdgeLanes& e, float offset) {
     const DF df;
     const DI di;
-    const VI i0 = hn::ConvertTo(di, hn::Floor(t));
-    const VF f = hn::Sub(t, hn::ConvertTo(df, i0));
+    const float floored = std::floor(offset);
+    const float f = offset - floored;
     const VI zero = hn::Zero(di);
+    const VI i0 = hn::Add(e.along, hn::Set(di, int(floored)));
     const VI p0 = hn::Mul(hn::Min(hn::Max(i0, zero), e.alongLast), e.alongStride);
-    const VI p1 = hn::Mul(hn::Min(hn::Max(hn::Add(i0, hn::Set(di, 1)), zero), e.alongLast), e.alongStride);
     const VF a = hn::Add(r.index(hn::Add(e.base0, p0)), r.index(hn::Add(e.base1, p0)));
+    if (f == 0.0f) return hn::Mul(hn::Set(df, 0.5f), a);
+    const VI p1 = hn::Mul(hn::Min(hn::Max(hn::Add(i0, hn::Set(di, 1)), zero), e.alongLast), e.alongStride);
     const VF b = hn::Add(r.index(hn::Add(e.base0, p1)), r.index(hn::Add(e.base1, p1)));
-    return hn::Mul(hn::Set(df, 0.5f), hn::Add(a, hn::Mul(f, hn::Sub(b, a))));
+    return hn::Mul(hn::Set(df, 0.5f), hn::Add(a, hn::Mul(hn::Set(df, f), hn::Sub(b, a))));
 }
 
 struct SearchEnds {
@@ -150,20 +159,22 @@ SearchEnds SearchBothWays(const VectorReader& r, const EdgeLanes& e, const Prese
     const auto& steps = preset.steps;
     SearchEnds out{hn::Set(df, steps[0]), hn::Zero(df), hn::Set(df, steps[0]), hn::Zero(df)};
     MF negActive = hn::FirstN(df, hn::Lanes(df)), posActive = negActive;
+    float distance = steps[0];  // of every lane still searching, either way
     for (std::size_t k = 1;; ++k) {
         const VF step = hn::Set(df, steps[k]);
         if (!hn::AllFalse(df, negActive)) {
-            const VF luma = hn::Sub(EdgeSample(r, e, hn::Sub(e.origin, out.negDistance)), e.pairAverage);
+            const VF luma = hn::Sub(EdgeSample(r, e, -distance), e.pairAverage);
             out.negLuma = hn::IfThenElse(negActive, luma, out.negLuma);
             negActive = hn::AndNot(hn::Ge(hn::Abs(luma), e.gradientQuarter), negActive);
             out.negDistance = hn::IfThenElse(negActive, hn::Add(out.negDistance, step), out.negDistance);
         }
         if (!hn::AllFalse(df, posActive)) {
-            const VF luma = hn::Sub(EdgeSample(r, e, hn::Add(e.origin, out.posDistance)), e.pairAverage);
+            const VF luma = hn::Sub(EdgeSample(r, e, distance), e.pairAverage);
             out.posLuma = hn::IfThenElse(posActive, luma, out.posLuma);
             posActive = hn::AndNot(hn::Ge(hn::Abs(luma), e.gradientQuarter), posActive);
             out.posDistance = hn::IfThenElse(posActive, hn::Add(out.posDistance, step), out.posDistance);
         }
+        distance += steps[k];
         // The last step is a guess taken without a sample, as in searchEdgeEnd.
         if (k + 1 == steps.size() || (hn::AllFalse(df, negActive) && hn::AllFalse(df, posActive))) break;
     }
@@ -236,7 +247,7 @@ VF DecideVector(VectorReader& r, const Settings& s, VI x, VI y, VI& partner) {
     e.alongLast = hn::IfThenElse(horizontalI, r.lastX, r.lastY);
     e.base0 = hn::Mul(across, acrossStride);
     e.base1 = hn::Mul(neighbour, acrossStride);
-    e.origin = hn::ConvertTo(df, hn::IfThenElse(horizontalI, x, y));
+    e.along = hn::IfThenElse(horizontalI, x, y);
     e.pairAverage = pairAverage;
     e.gradientQuarter = hn::Mul(hn::Set(df, 0.25f), hn::Max(hn::Abs(gradBefore), hn::Abs(gradAfter)));
     const SearchEnds ends = SearchBothWays(r, e, *s.preset);
@@ -252,7 +263,7 @@ VF DecideVector(VectorReader& r, const Settings& s, VI x, VI y, VI& partner) {
     // The neighbour's position: across the edge by `side`, clamped.
     const VI own = hn::Add(hn::Mul(y, r.width), x);
     partner = hn::IfThenElse(hn::RebindMask(di, flat), own,
-                             hn::Add(hn::Mul(hn::IfThenElse(horizontalI, x, y), e.alongStride), e.base1));
+                             hn::Add(hn::Mul(e.along, e.alongStride), e.base1));
     return hn::IfThenZeroElse(flat, amount);
 }
 
