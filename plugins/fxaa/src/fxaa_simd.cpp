@@ -24,7 +24,14 @@ std::size_t LumaSpan(const float* r, const float* g, const float* b, const float
     const hn::RebindToSigned<DF> di;
     const std::size_t lanes = hn::Lanes(df);
     if (end - begin < lanes) return begin;
+#if HWY_TARGET == HWY_SCALAR
     const float* table = encodeTable();
+#else
+    const std::uint64_t* pairs = encodePairs();
+    const hn::Repartition<std::uint64_t, DF> du64;
+    const hn::Repartition<std::int64_t, DF> di64;
+    const hn::Half<decltype(di)> dih;
+#endif
     const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), entries = hn::Set(df, float(kEncodeEntries));
     const VF inf = hn::Set(df, std::numeric_limits<float>::infinity());
     const auto last = hn::Set(di, kEncodeEntries - 1);
@@ -34,7 +41,15 @@ std::size_t LumaSpan(const float* r, const float* g, const float* b, const float
         const VF s = hn::Mul(hn::Sqrt(c), entries);
         const auto i = hn::Min(hn::ConvertTo(di, s), last);
         const VF f = hn::Sub(s, hn::ConvertTo(df, i));
+#if HWY_TARGET == HWY_SCALAR
         const VF a = hn::GatherIndex(df, table, i), bb = hn::GatherIndex(df, table + 1, i);
+#else
+        // Entries i and i + 1 with one 64-bit gather per half vector: half
+        // the elements of two 32-bit gathers, which bound this loop.
+        const VF lo = hn::BitCast(df, hn::GatherIndex(du64, pairs, hn::PromoteTo(di64, hn::LowerHalf(dih, i))));
+        const VF hi = hn::BitCast(df, hn::GatherIndex(du64, pairs, hn::PromoteTo(di64, hn::UpperHalf(dih, i))));
+        const VF a = hn::ConcatEven(df, hi, lo), bb = hn::ConcatOdd(df, hi, lo);
+#endif
         return hn::Add(a, hn::Mul(f, hn::Sub(bb, a)));
     };
     const VF nan = hn::Set(df, std::numeric_limits<float>::quiet_NaN());
