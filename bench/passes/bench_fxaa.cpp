@@ -67,12 +67,15 @@ darkroom::BufferPtr edgeHeavyImage(int size) {
             canvas.c[2][i] = 0.25f + 0.1f * t;
             canvas.c[3][i] = 1.0f;
         }
-    const double scale = size / 1024.0;  // same density of lines and discs at every size
+    // The same picture at every size, as a scene rendered at a higher
+    // resolution: lines and discs scale with the image (the share of edge
+    // pixels halves from 1024² to 2048²).
+    const double scale = size / 1024.0;
     const float outline[3] = {0.01f, 0.01f, 0.02f};
     Lcg rng(12345u);
-    for (int line = 0; line < int(80 * scale * scale); ++line) {
+    for (int line = 0; line < 80; ++line) {
         double x = rng.next() * size, y = rng.next() * size, angle = rng.next() * 6.2832;
-        const double turn = (rng.next() - 0.5) * 0.01, radius = 1.5 + 1.5 * rng.next();
+        const double turn = (rng.next() - 0.5) * 0.01 / scale, radius = 1.5 + 1.5 * rng.next();
         const float colour[3] = {float(0.05 + 0.3 * rng.next()), float(0.3 + 0.5 * rng.next()), 0.4f};
         // The outline along the whole line first, then the line over it.
         std::vector<std::pair<double, double>> path;
@@ -84,7 +87,7 @@ darkroom::BufferPtr edgeHeavyImage(int size) {
         for (const auto& [px, py] : path) canvas.disc(px, py, (radius + 1.0) * scale, outline);
         for (const auto& [px, py] : path) canvas.disc(px, py, radius * scale, colour);
     }
-    for (int particle = 0; particle < int(1200 * scale * scale); ++particle) {
+    for (int particle = 0; particle < 1200; ++particle) {
         const double x = rng.next() * size, y = rng.next() * size, radius = (2.0 + 3.0 * rng.next()) * scale;
         const float colour[3] = {float(0.2 + 0.6 * rng.next()), 0.05f, float(0.1 + 0.3 * rng.next())};
         canvas.disc(x, y, radius + scale, outline);
