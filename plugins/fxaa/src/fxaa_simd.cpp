@@ -107,7 +107,6 @@ int FlatSpan(const LumaPlane& plane, const Settings& s, const ColourRows& colour
     }
 }
 
-
 using DI = hn::RebindToSigned<DF>;
 using VI = hn::Vec<DI>;
 using MF = hn::Mask<DF>;
