@@ -9,8 +9,11 @@
 #include <darkroom/error.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace darkroom {
 
@@ -45,6 +48,89 @@ struct ColourPlanes {
         outB[i] = (wi * b[i] + wj * b[j]) / alpha;
         outA[i] = alpha;
     }
+};
+
+// The pixels of a band of rows that need a decision, gathered until there are
+// enough to fill vectors, then decided together (decideList) and blended. A
+// few thousand entries at most: the buffers stay in the cache and never grow
+// with the image.
+class EdgeBatch {
+public:
+    EdgeBatch(const fxaa::LumaPlane& plane, const fxaa::Settings& s, const ColourPlanes& planes)
+        : plane_(plane), s_(s), planes_(planes),
+          vectorised_(std::size_t(plane.width) * std::size_t(plane.height) <= std::size_t(INT32_MAX)) {
+        const std::size_t capacity = kFlush + std::size_t(plane.width) + 64;  // 64: flatSpan's vector stores
+        xs_.resize(capacity);
+        ys_.resize(capacity);
+        amount_.resize(capacity);
+        partner_.resize(capacity);
+    }
+
+    // Pixel (x, y): kept as it is when not blendable (NaN luma), else queued.
+    void add(int x, int y) {
+        const std::size_t i = index(x, y);
+        if (std::isnan(plane_.luma[i])) {
+            planes_.copy(i);
+            return;
+        }
+        xs_[count_] = x;
+        ys_[count_] = y;
+        ++count_;
+    }
+
+    // Row y, 0 < y < height - 1, from x = 1: flatSpan copies the flat pixels
+    // and queues the others. Returns where it stopped (1 when the row is
+    // shorter than a vector).
+    int addInterior(const fxaa::ColourRows& rows, int y) {
+        const std::size_t before = count_;
+        const int x = fxaa::flatSpan(plane_, s_, rows, y, 1, plane_.width - 1, xs_.data(), count_);
+        std::fill(ys_.begin() + std::ptrdiff_t(before), ys_.begin() + std::ptrdiff_t(count_), y);
+        return std::max(x, 1);
+    }
+
+    // Decides and writes the queued pixels once a row has made them enough
+    // (or always, when `all`).
+    void flush(bool all) {
+        if (count_ == 0 || (!all && count_ < kFlush)) return;
+        if (vectorised_) {
+            fxaa::decideList(plane_, s_, xs_.data(), ys_.data(), count_, amount_.data(), partner_.data());
+            for (std::size_t k = 0; k < count_; ++k)
+                write(index(xs_[k], ys_[k]), std::size_t(partner_[k]), amount_[k]);
+        } else {
+            // Too large for decideList's int32 indices: the per-pixel decision.
+            for (std::size_t k = 0; k < count_; ++k) {
+                const int x = xs_[k], y = ys_[k];
+                const fxaa::Blend d = fxaa::decide(plane_, x, y, s_);
+                const int nx = std::clamp(x + d.dx, 0, plane_.width - 1);
+                const int ny = std::clamp(y + d.dy, 0, plane_.height - 1);
+                write(index(x, y), index(nx, ny), d.amount);
+            }
+        }
+        count_ = 0;
+    }
+
+private:
+    static constexpr std::size_t kFlush = 2048;
+
+    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(plane_.width) + std::size_t(x); }
+
+    // Pixel i takes `amount` of its neighbour j, unless there is nothing to
+    // take or j is not blendable.
+    void write(std::size_t i, std::size_t j, float amount) const {
+        if (amount > 0.0f && j != i && !std::isnan(plane_.luma[j]))
+            planes_.blend(i, j, amount);
+        else
+            planes_.copy(i);
+    }
+
+    const fxaa::LumaPlane& plane_;
+    const fxaa::Settings& s_;
+    const ColourPlanes& planes_;
+    const bool vectorised_;
+    std::vector<std::int32_t> xs_, ys_;
+    std::vector<float> amount_;
+    std::vector<std::int32_t> partner_;
+    std::size_t count_ = 0;
 };
 
 }  // namespace
@@ -103,36 +189,22 @@ void Fxaa::execute(Context& ctx) {
 
     // Pass 2: each pixel reads the luma around it and writes only itself, so
     // rows are independent and the result does not depend on the split.
-    auto filterPixel = [&](int x, int y) {
-        const std::size_t i = std::size_t(y) * rowLength + std::size_t(x);
-        if (std::isnan(luma[i])) {
-            planes.copy(i);  // NaN or transparent: kept as it is
-            return;
-        }
-        const fxaa::Blend d = fxaa::decide(plane, x, y, s);
-        const int nx = std::clamp(x + d.dx, 0, w - 1), ny = std::clamp(y + d.dy, 0, h - 1);
-        const std::size_t j = std::size_t(ny) * rowLength + std::size_t(nx);
-        if (d.amount > 0.0f && j != i && !std::isnan(luma[j]))
-            planes.blend(i, j, d.amount);
-        else
-            planes.copy(i);
-    };
+    // Inside the image, a vector of pixels at a time leaves the flat ones as
+    // they are; only the others (and the border) are decided, a batch of them
+    // together.
     const fxaa::ColourRows rows{{r, g, b, a}, {planes.outR, planes.outG, planes.outB, planes.outA}};
     ctx.parallelFor(0, h, 8, [&](int y0, int y1) {
-        // Inside the image, a vector of pixels at a time leaves the flat ones
-        // as they are; only the others go through the edge search.
-        std::vector<std::uint8_t> needsDecision(rowLength);
+        EdgeBatch batch(plane, s, planes);
         for (int y = y0; y < y1; ++y) {
             int x = 0;
             if (y > 0 && y < h - 1 && w > 2) {
-                filterPixel(0, y);
-                x = fxaa::flatSpan(plane, s, rows, y, 1, w - 1, needsDecision.data());
-                for (int k = 1; k < x; ++k)
-                    if (needsDecision[std::size_t(k)]) filterPixel(k, y);
-                x = std::max(x, 1);
+                batch.add(0, y);
+                x = batch.addInterior(rows, y);
             }
-            for (; x < w; ++x) filterPixel(x, y);
+            for (; x < w; ++x) batch.add(x, y);
+            batch.flush(false);
         }
+        batch.flush(true);
     });
     ctx.progress(1.0);
     ctx.set(result_, out);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace darkroom::fxaa {
@@ -46,6 +47,19 @@ inline float lumaOf(const std::array<float, kEntries + 1>& t, float r, float g, 
 }  // namespace
 
 const float* encodeTable() { return encodingTable().data(); }
+
+const std::uint64_t* encodePairs() {
+    static const auto pairs = [] {
+        const auto& t = encodingTable();
+        std::array<std::uint64_t, kEntries> p{};
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            const float two[2] = {t[i], t[i + 1]};
+            std::memcpy(&p[i], two, sizeof two);  // t[i] in the first (lower-addressed) float
+        }
+        return p;
+    }();
+    return pairs.data();
+}
 
 float perceptualLuma(float r, float g, float b) { return lumaOf(encodingTable(), r, g, b); }
 

@@ -5,6 +5,7 @@
 // published Rec. 601 luma weights (0.299, 0.587, 0.114).
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace darkroom::fxaa {
 
@@ -24,6 +25,10 @@ inline bool blendable(float r, float g, float b, const float* alpha, std::size_t
 // entries (luma.cpp); for the SIMD luma (fxaa_simd.cpp).
 constexpr int kEncodeEntries = 4096;
 const float* encodeTable();
+// The same table as pairs: entry i holds entries i and i + 1 (the two an
+// interpolation reads) as the floats of one 64-bit word, i < kEncodeEntries,
+// so that a vector of lookups is one 64-bit gather instead of two 32-bit ones.
+const std::uint64_t* encodePairs();
 
 // luma[i] for i in [begin, end): perceptualLuma, or NaN where the pixel is not
 // blendable. `alpha` may be null.
