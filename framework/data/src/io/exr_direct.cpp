@@ -8,7 +8,6 @@
 
 #include <Imath/half.h>
 #include <libdeflate.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -29,9 +28,11 @@ struct DecompressorDeleter {
     void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
 };
 
-// One task's working memory: a decompressor (not shareable between threads)
-// and the chunk as read, as inflated and as restored. Grown to the largest
-// chunk once, then reused.
+// One thread's working memory: a decompressor (not shareable between
+// threads) and the chunk as read, as inflated and as restored. Grown to the
+// largest chunk once and kept for the thread's life (a few hundred KiB per
+// thread): made afresh for each file, the vectors' zeroing and the pages the
+// kernel had to clear for them came back with every --foreach entry.
 struct Scratch {
     std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> inflater{libdeflate_alloc_decompressor()};
     std::vector<std::uint8_t> packed, inflated, raw;
@@ -123,10 +124,9 @@ bool readExrDirect(const std::string& path, const Imf::Header& header, WritableB
     exr_chunk_info_t first{};
     if (!chunkInfo(ctx, *layout, 0, first)) return false;
 
-    tbb::enumerable_thread_specific<Scratch> scratch;
     std::atomic<bool> failed{false};
     tbb::parallel_for(tbb::blocked_range<int>(0, layout->chunks), [&](const tbb::blocked_range<int>& range) {
-        Scratch& s = scratch.local();
+        static thread_local Scratch s;
         for (int chunk = range.begin(); chunk != range.end(); ++chunk) {
             if (failed.load(std::memory_order_relaxed)) return;
             if (!decodeChunk(ctx, *layout, chunk, s)) failed.store(true, std::memory_order_relaxed);
