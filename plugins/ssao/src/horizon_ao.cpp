@@ -113,64 +113,95 @@ struct Sample {
     bool anyNearest;
 };
 
-template <bool kPersp, bool kPoints>
-HWY_INLINE Sample SampleAt(DF d, const Lattice& L, const Receiver& r, VF dist, const March& m) {
-    const VF zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-    const VF maxX0 = hn::Set(d, L.maxX0), maxY0 = hn::Set(d, L.maxY0), edge = hn::Set(d, L.edge);
-    const VF ax = hn::Set(d, L.ax), ay = hn::Set(d, L.ay), halfAx = hn::Set(d, L.halfAx), halfAy = hn::Set(d, L.halfAy);
-    const VF inf = hn::Set(d, std::numeric_limits<float>::infinity());
+// The four pixels around a sample, x0 .. x0 + 1 and y0 .. y0 + 1, the
+// sample at offsets (tx, ty) from the first: f interpolated between them and
+// whether they are one surface (`ok`).
+struct Texels {
+    VF f00, f10, f01, f11, tx, ty, x0, y0, f;
+    MF ok;
+
+    // The pixel nearest the sample, the one floor(x + 1/2) reads (also where
+    // the lattice is clamped at the border): its f and its coordinates. It
+    // is one of the four already gathered, so an edge costs no fifth gather
+    // (and no division: f holds 1/z, as exactly as dividing z here).
+    HWY_INLINE VF Nearest(DF d, VF& nx, VF& ny) const {
+        const VF half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
+        const MF right = hn::Ge(tx, half), down = hn::Ge(ty, half);
+        nx = hn::Add(x0, hn::IfThenElseZero(right, one));
+        ny = hn::Add(y0, hn::IfThenElseZero(down, one));
+        return hn::IfThenElse(down, hn::IfThenElse(right, f11, f01), hn::IfThenElse(right, f10, f00));
+    }
+};
+
+// Depth at the samples (fx, fy) interpolated in 1/z (perspective) or z
+// between the four surrounding pixel centres, exact on a plane; `ok` where
+// they are one surface (spread within 4 pixel sizes, none empty).
+template <bool kPersp>
+HWY_INLINE Texels FineAt(DF d, const Lattice& L, VF fx, VF fy) {
+    const VF zero = hn::Zero(d);
     const float* f = L.f;
     const std::size_t below = std::size_t(L.stride);
+    // Clamped, so the outer half pixel at the borders is extrapolated
+    // from the two outermost rows/columns (still exact for a plane);
+    // the clamp also keeps every lane's reads inside the plane.
+    const VF x0 = hn::Min(hn::Max(hn::Floor(fx), zero), hn::Set(d, L.maxX0));
+    const VF y0 = hn::Min(hn::Max(hn::Floor(fy), zero), hn::Set(d, L.maxY0));
+    const VF tx = hn::Sub(fx, x0), ty = hn::Sub(fy, y0);
+    const VI idx = L.Index(d, x0, y0);
+    const VF f00 = hn::GatherIndex(d, f, idx), f10 = hn::GatherIndex(d, f + 1, idx);
+    const VF f01 = hn::GatherIndex(d, f + below, idx), f11 = hn::GatherIndex(d, f + below + 1, idx);
+    const VF lo = hn::Min(hn::Min(f00, f10), hn::Min(f01, f11));
+    const VF hi = hn::Max(hn::Max(f00, f10), hn::Max(f01, f11));
+    // Perspective: z spread <= 4 pixel sizes at the nearest z, i.e.
+    // (1/z) spread <= 4 * pixelScale * min(1/z). An empty corner
+    // (-inf) fails either test.
+    const VF edge = hn::Set(d, L.edge);
+    const MF ok = hn::Le(hn::Sub(hi, lo), kPersp ? hn::Mul(edge, lo) : edge);
+    const VF top = hn::MulAdd(hn::Sub(f10, f00), tx, f00);
+    const VF bottom = hn::MulAdd(hn::Sub(f11, f01), tx, f01);
+    return {f00, f10, f01, f11, tx, ty, x0, y0, hn::MulAdd(hn::Sub(bottom, top), ty, top), ok};
+}
+
+template <bool kPersp, bool kPoints>
+HWY_INLINE Sample SampleAt(DF d, const Lattice& L, const Receiver& r, VF dist, const March& m) {
+    const VF ax = hn::Set(d, L.ax), ay = hn::Set(d, L.ay), halfAx = hn::Set(d, L.halfAx), halfAy = hn::Set(d, L.halfAy);
+    const VF ninf = hn::Set(d, -std::numeric_limits<float>::infinity());
     const MF live = m.live;
     // The sample in pixel coordinates minus half a pixel.
     const VF fx = hn::MulAdd(m.dirX, dist, r.fx), fy = hn::MulAdd(m.dirY, dist, r.fy);
 
-    // Depth interpolated in 1/z (perspective) or z between the four
-    // surrounding pixel centres, exact on a plane; the nearest pixel where
-    // they straddle an edge (spread beyond 4 pixel sizes) or one is empty.
-    // fq: the sample's 1/z (perspective) or z; (qx, qy) its image-plane
-    // position (at unit depth in perspective).
-    VF fq = zero;
-    VF qx = hn::MulAdd(fx, ax, halfAx), qy = hn::MulAdd(fy, ay, halfAy);
-    MF interp = hn::FirstN(d, 0);
+    // fq: the sample's 1/z (perspective) or z, interpolated where the four
+    // pixels around it are one surface, else the nearest pixel's (an edge
+    // or an empty corner); (qx, qy): its image-plane position (at unit depth
+    // in perspective), at the nearest pixel's centre for those.
+    VF fq = hn::Zero(d), nx = fx, ny = fy;
+    MF nearest = hn::FirstN(d, 0);
     if (L.canInterp) {
-        // Clamped, so the outer half pixel at the borders is extrapolated
-        // from the two outermost rows/columns (still exact for a plane);
-        // the clamp also keeps every lane's reads inside the plane.
-        const VF x0 = hn::Min(hn::Max(hn::Floor(fx), zero), maxX0);
-        const VF y0 = hn::Min(hn::Max(hn::Floor(fy), zero), maxY0);
-        const VF tx = hn::Sub(fx, x0), ty = hn::Sub(fy, y0);
-        const VI idx = L.Index(d, x0, y0);
-        const VF f00 = hn::GatherIndex(d, f, idx), f10 = hn::GatherIndex(d, f + 1, idx);
-        const VF f01 = hn::GatherIndex(d, f + below, idx), f11 = hn::GatherIndex(d, f + below + 1, idx);
-        const VF lo = hn::Min(hn::Min(f00, f10), hn::Min(f01, f11));
-        const VF hi = hn::Max(hn::Max(f00, f10), hn::Max(f01, f11));
-        // Perspective: z spread <= 4 pixel sizes at the nearest z, i.e.
-        // (1/z) spread <= 4 * pixelScale * min(1/z). An empty corner
-        // (-inf) fails either test.
-        interp = hn::Le(hn::Sub(hi, lo), kPersp ? hn::Mul(edge, lo) : edge);
-        const VF top = hn::MulAdd(hn::Sub(f10, f00), tx, f00);
-        const VF bottom = hn::MulAdd(hn::Sub(f11, f01), tx, f01);
-        fq = hn::MulAdd(hn::Sub(bottom, top), ty, top);
+        const Texels t = FineAt<kPersp>(d, L, fx, fy);
+        fq = t.f;
+        nearest = hn::AndNot(t.ok, live);
+        if (!hn::AllFalse(d, nearest)) {
+            VF px, py;
+            fq = hn::IfThenElse(nearest, t.Nearest(d, px, py), fq);
+            nx = hn::IfThenElse(nearest, px, nx);
+            ny = hn::IfThenElse(nearest, py, ny);
+        }
+    } else {
+        // A single row or column: the nearest pixel. fx + 0.5 >= 0 for
+        // marching lanes; the others read pixel 0.
+        const VF half = hn::Set(d, 0.5f);
+        nx = hn::Floor(hn::Add(fx, half)), ny = hn::Floor(hn::Add(fy, half));
+        const VI idx = hn::IfThenElseZero(hn::RebindMask(DI(), live), L.Index(d, nx, ny));
+        fq = hn::GatherIndex(d, L.f, idx);
+        nearest = live;
     }
-    MF hit = live;
-    const MF nearest = hn::AndNot(interp, live);
-    const bool anyNearest = !hn::AllFalse(d, nearest);
-    if (anyNearest) {
-        // fx + 0.5 >= 0 for marching lanes; the others read pixel 0.
-        const VF nx = hn::Floor(hn::Add(fx, half)), ny = hn::Floor(hn::Add(fy, half));
-        const VI idx = hn::IfThenElseZero(hn::RebindMask(DI(), nearest), L.Index(d, nx, ny));
-        const VF zn = hn::GatherIndex(d, L.z, idx);
-        fq = hn::IfThenElse(nearest, kPersp ? hn::Div(one, zn) : zn, fq);
-        qx = hn::IfThenElse(nearest, hn::MulAdd(nx, ax, halfAx), qx);
-        qy = hn::IfThenElse(nearest, hn::MulAdd(ny, ay, halfAy), qy);
-        // Background never occludes.
-        hit = hn::AndNot(hn::AndNot(hn::Lt(zn, inf), nearest), hit);
-    }
+    const VF qx = hn::MulAdd(nx, ax, halfAx), qy = hn::MulAdd(ny, ay, halfAy);
+    // Background (f = -inf) never occludes.
+    MF hit = hn::AndNot(hn::AndNot(hn::Gt(fq, ninf), nearest), live);
     if (kPoints)
         hit = kPersp ? hn::And(hit, hn::And(hn::Gt(fq, r.pointsMinF), hn::Le(fq, r.pointsMaxF)))
                      : hn::And(hit, hn::And(hn::Lt(fq, r.p.z), hn::Le(hn::Sub(r.p.z, fq), r.thick)));
-    return {fq, qx, qy, hit, nearest, anyNearest};
+    return {fq, qx, qy, hit, nearest, !hn::AllFalse(d, nearest)};
 }
 
 // One sample of march m at `dist` pixels from the receiver.
