@@ -24,7 +24,8 @@ TEST(SameBytes, AnyOneDifferingByteMakesThemDifferent) {
     for (std::size_t size : {std::size_t(1), std::size_t(100), std::size_t(4096), std::size_t(1) << 20,
                              (std::size_t(1) << 20) + 7}) {
         const std::vector<unsigned char> a(size, 0);
-        std::vector<std::size_t> where = {0, size - 1, size / 2, size / 3, size / 64 + 1};
+        // (size / 1024 * 7 + size / 2048: inside the 8th probe of a probed size.)
+        std::vector<std::size_t> where = {0, size - 1, size / 2, size / 3, size / 64 + 1, size / 1024 * 7 + size / 2048};
         for (std::size_t at : where) {
             if (at >= size) continue;
             std::vector<unsigned char> b = a;
