@@ -102,7 +102,9 @@ public:
     }
 
 private:
-    static constexpr std::size_t kIdleCap = std::size_t(256) << 20;
+    // The framework's plane pool draws its large planes from here too
+    // (framework/core/src/plane_pool.cpp): the cap is the pool's.
+    static constexpr std::size_t kIdleCap = std::size_t(1) << 30;
     std::mutex mutex_;
     std::multimap<std::size_t, void*, MappedSizeLess> idle_;
     std::size_t idleBytes_ = 0;

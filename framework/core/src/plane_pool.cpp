@@ -81,6 +81,7 @@ PlanePool& PlanePool::shared() {
 
 std::shared_ptr<HostPlane> PlanePool::acquire(std::size_t pixels, Fill how) {
     const std::size_t bytes = roundedBytes(pixels);
+    if (bytes >= kHugePage) return acquireMapped(pixels, how);
     void* storage = nullptr;
     bool poison = false;
     {
@@ -102,6 +103,26 @@ std::shared_ptr<HostPlane> PlanePool::acquire(std::size_t pixels, Fill how) {
     else if (poison)
         fill(storage, bytes, kPoison);
     return std::make_shared<HostPlane>(storage, pixels, [this, bytes](void* s) { release(s, bytes); });
+}
+
+// Planes of a huge page or more come from the SDK's mappings
+// (newHostPlane), the memory the readers' planes come from too: one idle
+// store for both, so a pass's output reuses what a reader's plane gave
+// back. With a store each, a one-shot `darkroom run` of the demo left the
+// readers' released planes idle while its passes took fresh pages, whose
+// clearing by the kernel was 15 % of the run's CPU.
+std::shared_ptr<HostPlane> PlanePool::acquireMapped(std::size_t pixels, Fill how) {
+    std::shared_ptr<HostPlane> plane = newHostPlane(pixels, false);
+    bool poison = false;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        poison = poison_;
+    }
+    if (how == Fill::Zero)
+        fill(plane->writableData(), pixels * 4, 0u);
+    else if (poison)
+        fill(plane->writableData(), pixels * 4, kPoison);
+    return plane;
 }
 
 void PlanePool::release(void* storage, std::size_t bytes) {

@@ -2,8 +2,10 @@
 // Where the host's planes come from. Memory given back by released planes is
 // kept for the next allocation of the same size (editor edits and --foreach
 // entries allocate the same sizes over and over), so a pass pays neither the
-// allocator nor the kernel's page faults again; what exceeds the pool's idle
-// capacity goes back to the system.
+// allocator nor the kernel's page faults again; what exceeds the idle
+// capacity goes back to the system. Planes of 2 MiB or more share the SDK's
+// store of mappings (newHostPlane) with the readers; smaller ones are kept
+// here.
 #include <darkroom/buffer.h>
 #include <darkroom/context.h>
 
@@ -42,6 +44,7 @@ public:
 
 private:
     PlanePool();
+    std::shared_ptr<HostPlane> acquireMapped(std::size_t pixels, Fill fill);
     void release(void* storage, std::size_t bytes);
 
     mutable std::mutex mutex_;

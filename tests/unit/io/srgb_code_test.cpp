@@ -6,6 +6,7 @@
 // neighbours, each bucket's edges — and an even spread of the rest.
 #include "eight_bit.h"
 #include "srgb_code.h"
+#include "../../../plugins/normals/tests/simd_targets.h"
 
 #include <darkroom/buffer.h>
 #include <darkroom/srgb.h>
@@ -16,6 +17,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 using darkroom::io::srgbCode;
@@ -109,4 +111,56 @@ TEST(SrgbCode, LitValuesAmongBackgroundKeepTheirCodes) {
             EXPECT_EQ(int(px.data[std::size_t(2 * i + 1)]), i == lit ? 64 : 0) << "lit " << lit << ", pixel " << i;
         }
     }
+}
+
+// The rows are encoded a vector of pixels at a time (eight_bit_rows.cpp):
+// grey, grey + alpha, RGB and RGBA rows, of widths with and without a tail
+// shorter than a vector, give every value's own code (encodeColourValue,
+// encodeAlphaValue) with every SIMD instruction set this CPU has. Values:
+// special ones, every sRGB threshold and alpha rounding edge with their
+// neighbours, and random ones in and around (0, 1).
+TEST(SrgbCode, RowsEncodedByVectorsGiveEachValuesCode) {
+    std::vector<float> values{0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::nanf(""), INFINITY, -INFINITY, 1e-30f, 0.5f};
+    const darkroom::io::SrgbCodeTable& table = darkroom::io::srgbCodeTable();
+    for (int k = 1; k < 256; ++k) {
+        const float t = std::bit_cast<float>(table.threshold[k]);
+        values.insert(values.end(), {std::nextafter(t, 0.0f), t, std::nextafter(t, 1.0f)});
+        const float edge = (float(k) - 0.5f) / 255.0f;
+        values.insert(values.end(), {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 1.0f)});
+    }
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> around(-0.25f, 1.25f);
+    while (values.size() < 4000) values.push_back(around(random));
+    for (int channels = 1; channels <= 4; ++channels)
+        for (const bool alpha : {false, true}) {
+            if (alpha && channels == 1) continue;
+            for (const int width : {1, 15, 16, 37, 1000}) {
+                const int height = int(values.size()) / width / channels;
+                std::vector<std::vector<float>> planes{std::size_t(channels)};
+                darkroom::io::EightBitSource src;
+                src.width = width, src.height = height, src.channels = channels, src.alpha = alpha;
+                for (int c = 0; c < channels; ++c) {
+                    // Each channel a different stretch of the values.
+                    planes[std::size_t(c)].assign(values.begin() + c * width * height,
+                                                  values.begin() + (c + 1) * width * height);
+                    src.planes.push_back(planes[std::size_t(c)].data());
+                }
+                const std::size_t rowBytes = std::size_t(width * channels);
+                const auto results = darkroom::test::resultsPerSimdTarget([&] {
+                    std::vector<unsigned char> rows(rowBytes * std::size_t(height), 0x5a);
+                    darkroom::io::encodeEightBitRows(src, rows.data(), rowBytes);
+                    return rows;
+                });
+                for (const auto& [target, rows] : results)
+                    for (int i = 0; i < width * height; ++i)
+                        for (int c = 0; c < channels; ++c) {
+                            const float v = planes[std::size_t(c)][std::size_t(i)];
+                            const int want = alpha && c == channels - 1 ? darkroom::io::encodeAlphaValue(v)
+                                                                        : darkroom::io::encodeColourValue(v);
+                            ASSERT_EQ(int(rows[std::size_t(i * channels + c)]), want)
+                                << target << ", " << channels << " channels" << (alpha ? " with alpha" : "")
+                                << ", width " << width << ", pixel " << i << ", value " << v;
+                        }
+            }
+        }
 }

@@ -1,7 +1,6 @@
 #include "eight_bit.h"
 
-#include "background_spans.h"
-#include "srgb_code.h"
+#include "eight_bit_rows.h"
 
 #include <darkroom/error.h>
 #include <darkroom/channel_text.h>
@@ -39,20 +38,6 @@ std::vector<std::string> defaultChannels(const Buffer& image, const std::string&
     return ch;
 }
 
-// The 8-bit code of alpha, stored linearly: lround(v * 255), NaN and v <= 0
-// -> 0. For m >= 0, lround(m) is floor(m + 0.5) computed exactly in double.
-inline unsigned char encodeAlpha(float v) {
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return (unsigned char)(int)(double(v * 255.0f) + 0.5);
-}
-
-inline unsigned char encodeColour(const SrgbCodeTable& srgb, float v) {
-    if (!(v > 0.0f)) return 0;  // also NaN
-    if (v >= 1.0f) return 255;
-    return srgb.code(v);
-}
-
 }  // namespace
 
 EightBitSource chooseEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
@@ -76,42 +61,12 @@ EightBitSource chooseEightBit(const Buffer& image, const std::string& path, cons
 }
 
 void encodeEightBitRows(const EightBitSource& src, unsigned char* rows, std::size_t rowBytes) {
-    // Linear -> sRGB code value (round to nearest) by thresholds
-    // (srgb_code.h), NaN -> 0; alpha is stored linearly. Rows in parallel,
-    // one channel at a time along a row, so each loop reads one plane.
-    const SrgbCodeTable& srgb = srgbCodeTable();
-    const std::size_t w = std::size_t(src.width), n = std::size_t(src.channels);
-    const std::size_t spans = (w + kBackgroundSpan - 1) / kBackgroundSpan;
+    // Rows in parallel, each a vector of pixels at a time (eight_bit_rows.h).
+    const std::size_t w = std::size_t(src.width);
     tbb::parallel_for(0, src.height, [&](int y) {
-        unsigned char* row = rows + std::size_t(y) * rowBytes;
-        // A rendered picture is often mostly background (84 % of the pixels
-        // of a colour-mapped 2048² isosurface): spans found by SIMD to hold
-        // nothing above zero in a channel give that channel code 0 without a
-        // look at each value, and spans that are background in every channel
-        // are cleared at once.
-        std::vector<std::uint8_t> background(spans * n), everywhere(spans, 1);
-        for (std::size_t c = 0; c < n; ++c) {
-            markBackgroundSpans(src.planes[c] + std::size_t(y) * w, w, background.data() + c * spans);
-            for (std::size_t k = 0; k < spans; ++k) everywhere[k] &= background[c * spans + k];
-        }
-        for (std::size_t k = 0; k < spans; ++k)
-            if (everywhere[k])
-                std::memset(row + k * kBackgroundSpan * n, 0, (std::min(w, (k + 1) * kBackgroundSpan) - k * kBackgroundSpan) * n);
-        for (std::size_t c = 0; c < n; ++c) {
-            const float* s = src.planes[c] + std::size_t(y) * w;
-            unsigned char* d = row + c;
-            const bool alpha = src.alpha && c == n - 1;
-            for (std::size_t k = 0; k < spans; ++k) {
-                if (everywhere[k]) continue;
-                const std::size_t x0 = k * kBackgroundSpan, x1 = std::min(w, x0 + kBackgroundSpan);
-                if (background[c * spans + k])
-                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = 0;
-                else if (alpha)
-                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = encodeAlpha(s[x]);
-                else
-                    for (std::size_t x = x0; x < x1; ++x) d[x * n] = encodeColour(srgb, s[x]);
-            }
-        }
+        const float* planes[4];
+        for (int c = 0; c < src.channels; ++c) planes[c] = src.planes[std::size_t(c)] + std::size_t(y) * w;
+        encodeEightBitRow(planes, src.channels, src.alpha, w, rows + std::size_t(y) * rowBytes);
     });
 }
 

@@ -2,6 +2,8 @@
 // A float buffer as the 8-bit sRGB pixels of a PNG, JPEG, TIFF...: which
 // channels (image_io.h's rules), linear -> sRGB code values, straight alpha.
 // Shared by the native PNG writer and the OpenImageIO module. Internal.
+#include "srgb_code.h"
+
 #include <darkroom/buffer.h>
 #include <darkroom/data/image_io.h>
 
@@ -26,6 +28,22 @@ struct EightBitSource {
 };
 EightBitSource chooseEightBit(const Buffer& image, const std::string& path, const ImageWriteOptions& options,
                               bool alphaAllowed);
+
+// The code of one value. Colour: linear -> sRGB code value, rounded to
+// nearest (srgb_code.h), NaN and v <= 0 -> 0, v >= 1 -> 255. Alpha, stored
+// linearly: lround(v * 255), NaN and v <= 0 -> 0; for m >= 0, lround(m) is
+// floor(m + 0.5) computed exactly in double. The rows below are encoded a
+// vector at a time to the same bytes (eight_bit_rows.cpp; the tests compare).
+inline unsigned char encodeColourValue(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return srgbCode(v);
+}
+inline unsigned char encodeAlphaValue(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return (unsigned char)(int)(double(v * 255.0f) + 0.5);
+}
 
 // Their interleaved 8-bit codes, row y at rows + y * rowBytes (every byte of
 // the width * channels written), so that a PNG writer can encode straight

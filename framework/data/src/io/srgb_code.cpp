@@ -25,6 +25,7 @@ struct Tables {
     std::array<std::uint32_t, 257> threshold{};
     // The code of the first float of each bucket of 2^kBucketShift floats.
     std::vector<std::uint8_t> bucketStart;
+    std::vector<std::uint32_t> bucketStartWide;
 
     Tables() {
         for (int k = 1; k <= 255; ++k) {
@@ -42,6 +43,7 @@ struct Tables {
             const std::uint32_t first = std::max<std::uint32_t>(1, std::uint32_t(b) << kBucketShift);
             bucketStart[b] = std::uint8_t(first >= kOne ? 255 : exactCode(first));
         }
+        bucketStartWide.assign(bucketStart.begin(), bucketStart.end());
     }
 };
 
@@ -49,7 +51,7 @@ struct Tables {
 
 const SrgbCodeTable& srgbCodeTable() {
     static const Tables t;
-    static const SrgbCodeTable view{t.threshold.data(), t.bucketStart.data()};
+    static const SrgbCodeTable view{t.threshold.data(), t.bucketStart.data(), t.bucketStartWide.data()};
     return view;
 }
 

@@ -21,6 +21,7 @@ struct SrgbCodeTable {
     static constexpr int kBucketShift = 16;
     const std::uint32_t* threshold;    // [k]: bits of the least float whose code is >= k; [256]: 1.0f
     const std::uint8_t* bucketStart;   // the code of the first float of each bucket of 2^16 floats
+    const std::uint32_t* bucketStartWide;  // the same codes as 32-bit words, for SIMD gathers (eight_bit_rows.cpp)
 
     // v must be in (0, 1): callers map NaN, v <= 0 and v >= 1 themselves.
     std::uint8_t code(float v) const {
