@@ -17,6 +17,20 @@ TEST(SameBytes, EqualPlanesAreTheSame) {
     EXPECT_TRUE(sameBytes(a.data(), b.data(), 0));
 }
 
+// The probes find a difference confined to a band of columns away from the
+// picture's edge (an object in the middle of a 2048-wide picture), as they
+// must for the shortcut to pay: probes at one place per stretch of whole
+// rows would all fall in the same columns and miss it.
+TEST(SameBytes, ProbesFindADifferenceInABandOfColumns) {
+    const std::size_t width = 2048, height = 256;
+    std::vector<float> a(width * height, 0.0f), b = a;
+    for (std::size_t y = 0; y < height; ++y)
+        for (std::size_t x = 900; x < 1000; ++x) b[y * width + x] = 1.0f;
+    EXPECT_TRUE(darkroom::probesDiffer(a.data(), b.data(), a.size() * 4));
+    EXPECT_FALSE(sameBytes(a.data(), b.data(), a.size() * 4));
+    EXPECT_FALSE(darkroom::probesDiffer(b.data(), std::vector<float>(b).data(), b.size() * 4));
+}
+
 TEST(SameBytes, AnyOneDifferingByteMakesThemDifferent) {
     // Small and large sizes (below and above the size that is probed), and
     // every position class: the first and last bytes, probed stretches and
