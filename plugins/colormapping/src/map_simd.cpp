@@ -43,6 +43,14 @@ std::size_t MapSpan(const MapJob& job, const float* values, std::size_t begin, s
         const auto vf = hn::LoadU(df, values + i);
         const V v = hn::PromoteTo(d, vf);
         const auto background = job.depth ? hn::Eq(hn::LoadU(df, job.depth + i), inf) : hn::FirstN(df, 0);
+        if (job.depth && hn::AllTrue(df, background)) {
+            // Nothing but background (most vectors of a rendered picture:
+            // 84 % of the pixels of the demo's isosurface at 2048²): the
+            // zeros every lane would get, without the lookups.
+            for (int c = 0; c < 4; ++c) hn::StoreU(hn::Zero(df), df, job.out[c] + i);
+            if (i + lanes == end) return end;
+            continue;
+        }
         const auto isNan = job.haveRange ? hn::IsNaN(vf) : hn::FirstN(df, lanes);
         V p;
         if (flat) {

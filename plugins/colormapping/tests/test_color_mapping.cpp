@@ -255,3 +255,27 @@ TEST(ColorMapping, ResultDoesNotDependOnTheSimdInstructionSet) {
         }
     }
 }
+
+// Vectors of pixels that are all background (Z = +inf) are written as
+// zeros without their lookups; a lone lit pixel among background, at every
+// place of a vector and in the row's overlapping last vector, keeps its
+// colour, the same as in a picture with no background at all.
+TEST(ColorMapping, LongBackgroundRunsAreZeroAndLitPixelsAmongThemKeepTheirColour) {
+    const int w = 67;
+    const auto value = [](int x) { return 0.25f + 0.01f * float(x); };
+    const auto lit = [](int x, int y) { return x == y % w || x >= 60; };
+    const auto img = test::makeImage(w, 40, {"Z", "s"}, [&](int x, int y, int c) {
+        if (c == 0) return lit(x, y) ? 1.0f : kInf;
+        return value(x);
+    });
+    const auto plain = test::makeImage(w, 40, {"Z", "s"}, [&](int x, int, int c) { return c == 0 ? 1.0f : value(x); });
+    const Inputs range{{"range", {Value("manual")}}, {"minimum", {Value(0.0)}}, {"maximum", {Value(1.0)}}};
+    const auto out = mapImage(img, range).outputs.at("image").asImage();
+    const auto reference = mapImage(plain, range).outputs.at("image").asImage();
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Color got = pixel(*out, std::size_t(y * w + x));
+            const Color want = lit(x, y) ? pixel(*reference, std::size_t(y * w + x)) : Color{0, 0, 0, 0};
+            expectColor(got, want, 0.0f, "pixel " + std::to_string(x) + ", " + std::to_string(y));
+        }
+}
