@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <map>
 #include <mutex>
 #include <new>
@@ -82,8 +83,11 @@ public:
     }
     void* take(std::size_t mapped) {
         std::lock_guard<std::mutex> lock(mutex_);
-        const auto it = idle_.find(mapped);
-        if (it == idle_.end()) return nullptr;
+        // The most recently released of that size: the likeliest still in
+        // the caches (equal sizes are kept in the order they came back).
+        const auto [first, last] = idle_.equal_range(mapped);
+        if (first == last) return nullptr;
+        const auto it = std::prev(last);
         void* p = it->second;
         idle_.erase(it);
         idleBytes_ -= mapped;
