@@ -135,7 +135,11 @@ TEST(BvhSettings, ChosenByTheScenesSizeAndTheMemoryAtHand) {
 // Layers count crossings per object: a ray through an edge between two
 // pieces of one surface crosses it once, as it does through any other edge.
 TEST(BvhSettings, PiecesGiveTheSameLayers) {
-    const auto scene = tieScene();
+    // Without the coincident quads: which of two coincident objects a layer
+    // shows after a tie is what the test above pins, and the Low build left
+    // it to chance here (1 run in about 40 differed at phi 290 with the
+    // Repeat method, objectId and layer 1), which is not about pieces.
+    const auto scene = tieScene(false);
     Camera proto;
     proto.width = proto.height = 96;
     proto.fovYDegrees = 35;
