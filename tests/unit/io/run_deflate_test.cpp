@@ -124,3 +124,26 @@ TEST(HuffmanCode, CanonicalCodesArePrefixFree) {
             EXPECT_NE(c.codes[std::size_t(a)] & mask, c.codes[std::size_t(b)] & mask) << a << " prefixes " << b;
         }
 }
+
+// The blocks are coded in parallel and joined at the bit where each lands:
+// coded blocks of every bit length after one another, and stored blocks
+// (which align to a byte of the whole stream) between coded ones, inflate
+// back, and coding the same bytes twice gives the same stream.
+TEST(RunDeflate, BlocksCodedApartJoinIntoOneStream) {
+    constexpr std::size_t kBlock = std::size_t(1) << 17;
+    std::uint32_t seed = 5;
+    std::vector<unsigned char> data;
+    for (int k = 0; k < 7; ++k) {
+        const bool noise = k % 3 == 1;  // stored between coded blocks
+        const auto part = noise ? std::vector<unsigned char>(kBlock) : mixed(kBlock - std::size_t(k) * 11, seed + k);
+        const std::size_t at = data.size();
+        data.insert(data.end(), part.begin(), part.end());
+        if (noise)
+            for (std::size_t i = at; i < data.size(); ++i) data[i] = static_cast<unsigned char>(next(seed) >> 24);
+    }
+    for (int pixelBytes : {1, 3, 4}) {
+        expectRoundTrip(data, pixelBytes, "coded and stored blocks");
+        EXPECT_EQ(runDeflateZlib(data.data(), data.size(), pixelBytes),
+                  runDeflateZlib(data.data(), data.size(), pixelBytes));
+    }
+}

@@ -3,6 +3,7 @@
 #include "huffman_lengths.h"
 
 #include <libdeflate.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -124,7 +125,7 @@ void tokenize(const unsigned char* data, std::size_t begin, std::size_t end, int
 // for n more bytes, so that put() stores without a capacity check.
 class BitWriter {
 public:
-    explicit BitWriter(std::vector<unsigned char>& out) : out_(out), at_(out.size()) {}
+    explicit BitWriter(std::vector<unsigned char>& out) : out_(out), start_(out.size()), at_(out.size()) {}
     void reserve(std::size_t bytes) { out_.resize(at_ + bytes + 8); }
     void put(std::uint32_t bits, int count) {
         acc_ |= std::uint64_t(bits) << filled_;
@@ -154,9 +155,23 @@ public:
     }
     // After alignToByte(): drops the unused reserve.
     void finish() { out_.resize(at_); }
+    // Bits put since construction (pending ones included).
+    std::uint64_t bitsWritten() const { return std::uint64_t(at_ - start_) * 8 + std::uint64_t(filled_); }
+    // The first `count` bits of `bits` (LSB first, as put() writes them),
+    // from the current bit on; reserve() the bytes first.
+    void appendBits(const unsigned char* bits, std::uint64_t count) {
+        std::size_t i = 0;
+        for (; count >= 32; count -= 32, i += 4)
+            put(std::uint32_t(bits[i]) | std::uint32_t(bits[i + 1]) << 8 | std::uint32_t(bits[i + 2]) << 16 |
+                    std::uint32_t(bits[i + 3]) << 24,
+                32);
+        for (; count >= 8; count -= 8, ++i) put(bits[i], 8);
+        if (count > 0) put(bits[i] & ((1u << count) - 1u), int(count));
+    }
 
 private:
     std::vector<unsigned char>& out_;
+    std::size_t start_;
     std::size_t at_;
     std::uint64_t acc_ = 0;
     int filled_ = 0;
@@ -271,32 +286,66 @@ void writeStored(BitWriter& w, const unsigned char* data, std::size_t size, bool
     } while (at < size);
 }
 
+// One block encoded by itself: its dynamic-Huffman bits from bit 0 of
+// `bits`, or `stored` (written by the serial pass: a stored block aligns to
+// a byte of the whole stream, which depends on where it lands).
+struct EncodedBlock {
+    std::vector<unsigned char> bits;
+    std::uint64_t bitCount = 0;
+    bool stored = false;
+};
+
+EncodedBlock encodeBlock(const unsigned char* data, std::size_t begin, std::size_t end, bool last, int pixelBytes) {
+    // Each thread keeps its token buffer (a block's worth, 512 KiB).
+    static thread_local std::vector<std::uint32_t> tokens;
+    tokens.reserve(kBlockInput + 1);
+    Histograms h;
+    tokenize(data, begin, end, pixelBytes, tokens, h);
+    const BlockPlan plan = planBlock(h);
+    const std::size_t stored = end - begin;
+    const std::uint64_t storedBits = 8 * (stored + 5 * (stored / 65535 + 1)) + 7;
+    EncodedBlock out;
+    if (plan.bits >= storedBits) {
+        out.stored = true;
+        return out;
+    }
+    BitWriter w(out.bits);
+    w.reserve(std::size_t(plan.bits / 8) + 16);
+    writeHeader(w, plan, last);
+    writeTokens(w, plan, tokens, pixelBytes);
+    out.bitCount = w.bitsWritten();
+    w.alignToByte();
+    w.finish();
+    return out;
+}
+
 }  // namespace
 
 std::vector<unsigned char> runDeflateZlib(const unsigned char* data, std::size_t size, int pixelBytes) {
     pixelBytes = std::clamp(pixelBytes, 1, 8);
+    // The blocks are tokenised, planned and coded in parallel, each into
+    // bits of its own (their runs may look back into the block before: the
+    // input is all there); then joined in order at the bit where each lands.
+    // The same stream as coding them one after the other.
+    const std::size_t blocks = std::max<std::size_t>(1, (size + kBlockInput - 1) / kBlockInput);
+    std::vector<EncodedBlock> coded(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t k) {
+        const std::size_t begin = k * kBlockInput, end = std::min(size, begin + kBlockInput);
+        coded[k] = encodeBlock(data, begin, end, k + 1 == blocks, pixelBytes);
+    });
     std::vector<unsigned char> out{0x78, 0x01};  // deflate, 32 KiB window, fastest; 0x7801 % 31 == 0 (RFC 1950)
     BitWriter w(out);
-    std::vector<std::uint32_t> tokens;
-    tokens.reserve(kBlockInput + 1);
-    std::size_t begin = 0;
-    do {
-        const std::size_t end = std::min(size, begin + kBlockInput);
-        const bool last = end == size;
-        Histograms h;
-        tokenize(data, begin, end, pixelBytes, tokens, h);
-        const BlockPlan plan = planBlock(h);
-        const std::size_t stored = end - begin;
-        const std::uint64_t storedBits = 8 * (stored + 5 * (stored / 65535 + 1)) + 7;
-        w.reserve(std::size_t(std::max(plan.bits, storedBits) / 8) + 16);
-        if (plan.bits < storedBits) {
-            writeHeader(w, plan, last);
-            writeTokens(w, plan, tokens, pixelBytes);
+    for (std::size_t k = 0; k < blocks; ++k) {
+        const std::size_t begin = k * kBlockInput, end = std::min(size, begin + kBlockInput);
+        if (coded[k].stored) {
+            w.reserve(end - begin + 5 * ((end - begin) / 65535 + 1) + 16);
+            writeStored(w, data + begin, end - begin, k + 1 == blocks);
         } else {
-            writeStored(w, data + begin, stored, last);
+            w.reserve(coded[k].bits.size() + 16);
+            w.appendBits(coded[k].bits.data(), coded[k].bitCount);
         }
-        begin = end;
-    } while (begin < size);
+        coded[k] = {};  // its memory back as soon as it is joined
+    }
     w.alignToByte();
     const std::uint32_t adler = libdeflate_adler32(1, data, size);
     const unsigned char a[4] = {static_cast<unsigned char>(adler >> 24), static_cast<unsigned char>(adler >> 16),
