@@ -2,6 +2,7 @@
 // the general reader: the same objects, value for value, whatever the byte
 // order, window size or number of parallel tasks; and every file it does not
 // take, or finds wrong, read or refused by the general reader with its message.
+#include "direct_reader_checks.h"
 #include "mesh_test_files.h"
 #include "test_support.h"
 
@@ -15,6 +16,7 @@
 
 using namespace darkroom;
 using darkroom::test::expectError;
+using darkroom::test::expectSameObjects;
 using darkroom::test::put;
 
 namespace {
@@ -108,45 +110,11 @@ std::string plyOf(const Grid& g) {
     return out.take();
 }
 
-void expectSameObjects(const std::vector<SceneObject>& a, const std::vector<SceneObject>& b) {
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        EXPECT_EQ(a[k].name, b[k].name);
-        EXPECT_EQ(a[k].representation, b[k].representation);
-        EXPECT_EQ(a[k].vertices, b[k].vertices);
-        EXPECT_EQ(a[k].indices, b[k].indices);
-        EXPECT_EQ(a[k].primitiveCell, b[k].primitiveCell);
-        ASSERT_EQ(a[k].fields.size(), b[k].fields.size());
-        for (std::size_t f = 0; f < a[k].fields.size(); ++f) {
-            EXPECT_EQ(a[k].fields[f].name, b[k].fields[f].name);
-            EXPECT_EQ(a[k].fields[f].association, b[k].fields[f].association);
-            EXPECT_EQ(a[k].fields[f].values, b[k].fields[f].values) << a[k].fields[f].name;
-        }
-    }
-}
+const auto general = &test::generalReader<PlyReadOptions>;
+const auto windows = &test::windowsOf<PlyReadOptions>;
 
-PlyReadOptions general() {
-    PlyReadOptions o;
-    o.direct = false;
-    return o;
-}
-
-PlyReadOptions windows(std::size_t bytes) {
-    PlyReadOptions o;
-    o.windowBytes = bytes;
-    return o;
-}
-
-// readPly with the general reader shut out: --max-input-bytes (the largest
-// file read whole) set to 1 byte, which only the direct reader, never holding
-// the file whole, gets past.
 std::vector<SceneObject> readDirectOnly(const std::string& path, const PlyReadOptions& options = {}) {
-    struct Restore {
-        std::uint64_t before = limit(Limit::InputBytes);
-        ~Restore() { setLimit(Limit::InputBytes, before); }
-    } restore;
-    setLimit(Limit::InputBytes, 1);
-    return readPly(path, options);
+    return test::readDirectOnly([](const std::string& p, const PlyReadOptions& o) { return readPly(p, o); }, path, options);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // points, with or without point scalars, whatever the window size; and
 // every file it does not take, or finds wrong, read or refused by the
 // general reader with its message.
+#include "direct_reader_checks.h"
 #include "mesh_test_files.h"
 #include "test_support.h"
 
@@ -19,6 +20,8 @@
 
 using namespace darkroom;
 using darkroom::test::expectError;
+using darkroom::test::bits;
+using darkroom::test::expectSameObjects;
 using darkroom::test::put;
 
 namespace {
@@ -139,52 +142,11 @@ std::string vtkOf(const Grid& g) {
     return out.take();
 }
 
-// Floats as their bits: NaNs compare, and -0 differs from +0.
-std::vector<std::uint32_t> bits(const std::vector<float>& v) {
-    std::vector<std::uint32_t> out(v.size());
-    if (!v.empty()) std::memcpy(out.data(), v.data(), 4 * v.size());
-    return out;
-}
+const auto general = &test::generalReader<VtkLegacyReadOptions>;
+const auto windows = &test::windowsOf<VtkLegacyReadOptions>;
 
-void expectSameObjects(const std::vector<SceneObject>& a, const std::vector<SceneObject>& b) {
-    ASSERT_EQ(a.size(), b.size());
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        EXPECT_EQ(a[k].name, b[k].name);
-        EXPECT_EQ(a[k].representation, b[k].representation);
-        EXPECT_EQ(bits(a[k].vertices), bits(b[k].vertices));
-        EXPECT_EQ(a[k].indices, b[k].indices);
-        EXPECT_EQ(a[k].primitiveCell, b[k].primitiveCell);
-        ASSERT_EQ(a[k].fields.size(), b[k].fields.size());
-        for (std::size_t f = 0; f < a[k].fields.size(); ++f) {
-            EXPECT_EQ(a[k].fields[f].name, b[k].fields[f].name);
-            EXPECT_EQ(a[k].fields[f].association, b[k].fields[f].association);
-            EXPECT_EQ(bits(a[k].fields[f].values), bits(b[k].fields[f].values)) << a[k].fields[f].name;
-        }
-    }
-}
-
-VtkLegacyReadOptions general() {
-    VtkLegacyReadOptions o;
-    o.direct = false;
-    return o;
-}
-
-VtkLegacyReadOptions windows(std::size_t bytes) {
-    VtkLegacyReadOptions o;
-    o.windowBytes = bytes;
-    return o;
-}
-
-// readVtkLegacy with the general reader shut out: --max-input-bytes (the
-// largest file read whole) set to 1 byte, which only the direct reader,
-// never holding the file whole, gets past.
 std::vector<SceneObject> readDirectOnly(const std::string& path, const VtkLegacyReadOptions& options = {}) {
-    struct Restore {
-        std::uint64_t before = limit(Limit::InputBytes);
-        ~Restore() { setLimit(Limit::InputBytes, before); }
-    } restore;
-    setLimit(Limit::InputBytes, 1);
-    return readVtkLegacy(path, options);
+    return test::readDirectOnly([](const std::string& p, const VtkLegacyReadOptions& o) { return readVtkLegacy(p, o); }, path, options);
 }
 
 // The general reader's message for `path` (empty if it reads it).
@@ -399,11 +361,7 @@ TEST(VtkLegacyDirect, LimitsOfTheDirectReader) {
     EXPECT_NO_THROW(direct = readDirectOnly(path));
     expectSameObjects(direct, readVtkLegacy(path, general()));
     expectError([&] { readDirectOnly(path, general()); }, {path, "--max-input-bytes"});
-    struct Restore {
-        std::uint64_t before = limit(Limit::DecodedBytes);
-        ~Restore() { setLimit(Limit::DecodedBytes, before); }
-    } restore;
-    setLimit(Limit::DecodedBytes, 1000);
+    const test::ScopedLimit decoded(Limit::DecodedBytes, 1000);
     expectError([&] { readVtkLegacy(path); }, {path, "--max-decoded-bytes"});
 }
 
