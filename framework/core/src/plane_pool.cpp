@@ -8,35 +8,23 @@
 #include <cstring>
 #include <new>
 
-#include <sys/mman.h>
-
 namespace darkroom {
 
 namespace {
 
 constexpr std::size_t kAlignment = 64;  // a cache line: SIMD loads never straddle one at a row start
-// Planes of at least a huge page are put on huge pages (2 MiB on x86-64 and
-// most arm64 kernels). Passes that walk a column strip touch one 4 KiB page
-// per row of a 1024-wide plane, more pages than the TLB holds; on huge pages a
-// 1024^2 plane is two. A fresh plane also takes one page fault per 2 MiB
-// instead of 512.
+// Planes of at least a huge page (2 MiB on x86-64) come from the SDK's
+// mappings, which put them on huge pages (newHostPlane; why: acquireMapped).
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-
-std::size_t alignmentFor(std::size_t bytes) { return bytes >= kHugePage ? kHugePage : kAlignment; }
 
 std::size_t roundedBytes(std::size_t pixels) {
     const std::size_t b = std::max<std::size_t>(pixels, 1) * 4;
-    const std::size_t a = alignmentFor(b);
-    return (b + a - 1) / a * a;
+    return (b + kAlignment - 1) / kAlignment * kAlignment;
 }
 
 void* allocatePlane(std::size_t bytes) {
-    void* p = std::aligned_alloc(alignmentFor(bytes), bytes);
+    void* p = std::aligned_alloc(kAlignment, bytes);
     if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    // Only advice: where transparent huge pages are off it changes nothing.
-    if (bytes >= kHugePage) (void)::madvise(p, bytes, MADV_HUGEPAGE);
-#endif
     return p;
 }
 
@@ -92,9 +80,6 @@ std::shared_ptr<HostPlane> PlanePool::acquire(std::size_t pixels, Fill how) {
             storage = it->second;
             idle_.erase(it);
             idleBytes_ -= bytes;
-            ++stats_.reusedAllocations;
-        } else {
-            ++stats_.freshAllocations;
         }
     }
     if (!storage) storage = allocatePlane(bytes);
@@ -137,37 +122,9 @@ void PlanePool::release(void* storage, std::size_t bytes) {
     std::free(storage);
 }
 
-void PlanePool::setIdleCapacity(std::size_t bytes) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    idleCapacity_ = bytes;
-    while (idleBytes_ > idleCapacity_ && !idle_.empty()) {
-        auto it = std::prev(idle_.end());  // the largest first
-        idleBytes_ -= it->first;
-        std::free(it->second);
-        idle_.erase(it);
-    }
-}
-
-std::size_t PlanePool::idleBytes() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return idleBytes_;
-}
-
-void PlanePool::trim() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (auto& [bytes, p] : idle_) std::free(p);
-    idle_.clear();
-    idleBytes_ = 0;
-}
-
 void PlanePool::setPoison(bool on) {
     std::lock_guard<std::mutex> lock(mutex_);
     poison_ = on;
-}
-
-PlanePool::Stats PlanePool::stats() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return stats_;
 }
 
 }  // namespace darkroom

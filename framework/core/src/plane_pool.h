@@ -26,21 +26,11 @@ public:
     // leaves it as it comes, or fills it with kPoison when poisoning is on.
     std::shared_ptr<HostPlane> acquire(std::size_t pixels, Fill fill);
 
-    // Idle memory kept for reuse, in bytes (default 1 GiB).
-    void setIdleCapacity(std::size_t bytes);
-    std::size_t idleBytes() const;
-    void trim();  // gives all idle memory back
-
     // Tests turn this on: planes asked for with Fill::None are filled with
     // kPoison, a NaN whose payload no computation produces, so a pass that
     // leaves pixels unwritten is caught.
     void setPoison(bool on);
     static constexpr std::uint32_t kPoison = 0x7fbadbadu;
-
-    struct Stats {
-        std::size_t freshAllocations = 0, reusedAllocations = 0;
-    };
-    Stats stats() const;
 
 private:
     PlanePool();
@@ -50,9 +40,8 @@ private:
     mutable std::mutex mutex_;
     std::multimap<std::size_t, void*> idle_;  // bytes -> storage
     std::size_t idleBytes_ = 0;
-    std::size_t idleCapacity_ = std::size_t(1) << 30;
+    std::size_t idleCapacity_ = std::size_t(1) << 30;  // of the small planes kept here
     bool poison_ = false;
-    Stats stats_;
 };
 
 }  // namespace darkroom

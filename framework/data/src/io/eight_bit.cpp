@@ -7,9 +7,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <vector>
 
 namespace darkroom::io {

@@ -66,7 +66,9 @@ const Entry& moduleEntry(const ModuleSpec& spec, const std::string& purpose) {
     static std::once_flag once;
     static Loaded loaded;
     std::call_once(once, [&] { loaded = load(spec); });
-    if (!loaded.entry) throw Error(purpose + " needs " + spec.needs + ", but " + loaded.error);
+    if (!loaded.entry)
+        throw Error(purpose + " needs " + spec.needs + ", but " + loaded.error + "; " + spec.file +
+                    " is built and installed beside libdarkroom-data.so: build or install Darkroom again");
     return *static_cast<const Entry*>(loaded.entry);
 }
 
