@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 using namespace darkroom;
@@ -27,11 +28,12 @@ BufferPtr runSsao(const BufferPtr& image, Inputs params, int threads = 2) {
     return runFilter(*f, params, o).outputs.at("image").asImage();
 }
 
-// Cosine-weighted occlusion of a floor point at distance d from an infinite
-// vertical wall, counting only hits within distance R. Midpoint rule over the
-// polar angle theta (from the floor normal) and the azimuth phi (from the
-// direction toward the wall): a ray hits the wall at t = d / (sin theta cos phi).
-double cornerOcclusionQuadrature(double d, double R, int n = 1000) {
+// Cosine-weighted occlusion, within distance R, of a floor point at distance
+// d in front of a step of height h (an infinite wall x = 0, y <= h, solid
+// behind it). Midpoint rule over the polar angle theta (from the floor normal) and the
+// azimuth phi (from the direction toward the wall): a ray meets the wall
+// plane at t = d / (sin theta cos phi), at height t cos theta.
+double stepOcclusionQuadrature(double d, double h, double R, int n = 1000) {
     double sum = 0;
     const double dt = 0.5 * kPi / n, dp = 2.0 * kPi / n;
     for (int i = 0; i < n; ++i) {
@@ -39,10 +41,17 @@ double cornerOcclusionQuadrature(double d, double R, int n = 1000) {
         const double st = std::sin(th), ct = std::cos(th);
         for (int j = 0; j < n; ++j) {
             const double cp = std::cos((j + 0.5) * dp);
-            if (cp > 0 && d <= R * st * cp) sum += ct * st;
+            if (cp <= 0) continue;
+            const double t = d / (st * cp);
+            if (t <= R && t * ct <= h) sum += ct * st;
         }
     }
     return sum * dt * dp / kPi;
+}
+
+// The same for an infinite vertical wall (a step of infinite height).
+double cornerOcclusionQuadrature(double d, double R, int n = 1000) {
+    return stepOcclusionQuadrature(d, std::numeric_limits<double>::infinity(), R, n);
 }
 
 // The same integral in closed form, k = d / R < 1: (acos k - k sqrt(1 - k^2)) / pi;
@@ -164,30 +173,6 @@ TEST(SsaoAnalytic, FloorAtTheFootOfAWallMatchesCosineWeightedAO) {
     }
 }
 
-namespace {
-
-// Cosine-weighted occlusion, within distance R, of a floor point at distance
-// d in front of a step of height h (an infinite wall x = 0, y <= h, solid
-// behind it). Midpoint rule as cornerOcclusionQuadrature: a ray at polar
-// angle theta and azimuth phi (from the direction to the wall) meets the
-// wall plane at t = d / (sin theta cos phi), at height t cos theta.
-double stepOcclusionQuadrature(double d, double h, double R, int n = 1000) {
-    double sum = 0;
-    const double dt = 0.5 * kPi / n, dp = 2.0 * kPi / n;
-    for (int i = 0; i < n; ++i) {
-        const double th = (i + 0.5) * dt;
-        const double st = std::sin(th), ct = std::cos(th);
-        for (int j = 0; j < n; ++j) {
-            const double cp = std::cos((j + 0.5) * dp);
-            if (cp <= 0) continue;
-            const double t = d / (st * cp);
-            if (t <= R && t * ct <= h) sum += ct * st;
-        }
-    }
-    return sum * dt * dp / kPi;
-}
-
-}  // namespace
 
 // A step seen from straight above: its wall is edge-on, so the image has a
 // depth edge along it and every horizon sample that reaches the wall
